@@ -1,0 +1,24 @@
+# gdnav_idl_library(<target> <idl files...>)
+# Runs fastddsgen at build time (never committed) into ${CMAKE_CURRENT_BINARY_DIR}/<target>_gen and builds a
+# static library of the generated types. `-replace` is needed: without it fastddsgen silently keeps stale files.
+function(gdnav_idl_library target)
+  set(outdir ${CMAKE_CURRENT_BINARY_DIR}/${target}_gen)
+  file(MAKE_DIRECTORY ${outdir})
+  set(sources)
+  foreach(idl ${ARGN})
+    get_filename_component(abs ${idl} ABSOLUTE)
+    get_filename_component(base ${idl} NAME_WE)
+    set(gen ${outdir}/${base}.cxx ${outdir}/${base}.h ${outdir}/${base}PubSubTypes.cxx ${outdir}/${base}PubSubTypes.h)
+    add_custom_command(
+      OUTPUT ${gen}
+      COMMAND ${FASTDDSGEN} -replace -d ${outdir} ${abs}
+      DEPENDS ${abs}
+      COMMENT "fastddsgen ${base}.idl"
+      VERBATIM)
+    list(APPEND sources ${outdir}/${base}.cxx ${outdir}/${base}PubSubTypes.cxx)
+  endforeach()
+  add_library(${target} STATIC ${sources})
+  target_include_directories(${target} SYSTEM PUBLIC ${outdir})
+  target_link_libraries(${target} PUBLIC fastcdr fastrtps)
+  set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+endfunction()
