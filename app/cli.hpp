@@ -1,0 +1,9 @@
+#pragma once
+// The gdnav command line (CLI11). Programs register the components they link and call cli_main.
+#include "runtime/registry.hpp"
+
+namespace gdnav::app {
+
+int cli_main(int argc, char** argv, const runtime::ComponentRegistry& reg, const char* program_name);
+
+}  // namespace gdnav::app

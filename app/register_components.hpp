@@ -1,0 +1,7 @@
+#pragma once
+#include "runtime/registry.hpp"
+
+namespace gdnav::app {
+// Registers every production component linked into gdnav.
+void register_all_components(runtime::ComponentRegistry& reg);
+}  // namespace gdnav::app

@@ -1,0 +1,62 @@
+#include "runtime/dds_context.hpp"
+
+#include <stdexcept>
+
+#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/dds/topic/TypeSupport.hpp>
+#include <spdlog/spdlog.h>
+
+namespace gdnav::runtime {
+
+using namespace eprosima::fastdds::dds;
+
+DdsContext::DdsContext(int domain_id, const std::filesystem::path& profile_file, const std::string& name) {
+    auto* factory = DomainParticipantFactory::get_instance();
+    if (!std::filesystem::exists(profile_file))
+        throw std::runtime_error("DDS profile file not found: " + profile_file.string());
+    if (factory->load_XML_profiles_file(profile_file.string()) != ReturnCode_t::RETCODE_OK)
+        throw std::runtime_error("cannot load DDS XML profiles from " + profile_file.string());
+    DomainParticipantQos pq;
+    if (factory->get_participant_qos_from_profile(kParticipantProfile, pq) != ReturnCode_t::RETCODE_OK)
+        throw std::runtime_error("DDS profile file " + profile_file.string() + " has no participant profile '" +
+                                 kParticipantProfile + "'");
+    pq.name(name);
+    participant_ = factory->create_participant(static_cast<DomainId_t>(domain_id), pq);
+    if (!participant_) throw std::runtime_error("cannot create DDS participant on domain " + std::to_string(domain_id));
+    publisher_ = participant_->create_publisher(PUBLISHER_QOS_DEFAULT);
+    subscriber_ = participant_->create_subscriber(SUBSCRIBER_QOS_DEFAULT);
+    if (!publisher_ || !subscriber_) throw std::runtime_error("cannot create DDS publisher/subscriber");
+}
+
+DdsContext::~DdsContext() {
+    if (participant_) {
+        participant_->delete_contained_entities();
+        DomainParticipantFactory::get_instance()->delete_participant(participant_);
+    }
+}
+
+Topic* DdsContext::topic(const std::string& name, const MessageOps& ops) {
+    auto it = topics_.find(name);
+    if (it != topics_.end()) return it->second;
+    TypeSupport ts(ops.make_type());
+    if (participant_->register_type(ts) != ReturnCode_t::RETCODE_OK)
+        throw std::runtime_error("cannot register DDS type " + std::string(ops.type_name));
+    Topic* t = participant_->create_topic(name, ts.get_type_name(), TOPIC_QOS_DEFAULT);
+    if (!t) throw std::runtime_error("cannot create DDS topic " + name);
+    topics_[name] = t;
+    return t;
+}
+
+DataWriter* DdsContext::writer(const std::string& name, const MessageOps& ops, const char* profile) {
+    DataWriter* w = publisher_->create_datawriter_with_profile(topic(name, ops), profile);
+    if (!w) throw std::runtime_error("cannot create DDS writer for " + name + " with profile '" + profile + "'");
+    return w;
+}
+
+DataReader* DdsContext::reader(const std::string& name, const MessageOps& ops, const char* profile) {
+    DataReader* r = subscriber_->create_datareader_with_profile(topic(name, ops), profile);
+    if (!r) throw std::runtime_error("cannot create DDS reader for " + name + " with profile '" + profile + "'");
+    return r;
+}
+
+}  // namespace gdnav::runtime

@@ -1,0 +1,48 @@
+#pragma once
+// One DDS participant per process, created from the XML profiles in config/dds/ (loaded explicitly: Fast DDS 2.9
+// silently ignores FASTRTPS_DEFAULT_PROFILES_FILE unless profiles are loaded before the default QoS is read).
+// Topics and types are registered once; entities are deleted in the destructor so shared memory is released.
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include <fastdds/dds/domain/DomainParticipant.hpp>
+#include <fastdds/dds/publisher/DataWriter.hpp>
+#include <fastdds/dds/publisher/Publisher.hpp>
+#include <fastdds/dds/subscriber/DataReader.hpp>
+#include <fastdds/dds/subscriber/Subscriber.hpp>
+#include <fastdds/dds/topic/Topic.hpp>
+
+#include "runtime/message_traits.hpp"
+
+namespace gdnav::runtime {
+
+// Profile names defined in config/dds/gdnav_profiles.xml.
+inline constexpr const char* kParticipantProfile = "gdnav_participant";
+inline constexpr const char* kDataWriterProfile = "gdnav_data_writer";
+inline constexpr const char* kDataReaderProfile = "gdnav_data_reader";
+inline constexpr const char* kControlWriterProfile = "gdnav_control_writer";
+inline constexpr const char* kControlReaderProfile = "gdnav_control_reader";
+inline constexpr const char* kLatchedWriterProfile = "gdnav_latched_writer";
+inline constexpr const char* kLatchedReaderProfile = "gdnav_latched_reader";
+
+class DdsContext {
+public:
+    DdsContext(int domain_id, const std::filesystem::path& profile_file, const std::string& name);
+    ~DdsContext();
+    DdsContext(const DdsContext&) = delete;
+    DdsContext& operator=(const DdsContext&) = delete;
+
+    eprosima::fastdds::dds::DataWriter* writer(const std::string& topic, const MessageOps& ops, const char* profile);
+    eprosima::fastdds::dds::DataReader* reader(const std::string& topic, const MessageOps& ops, const char* profile);
+    [[nodiscard]] eprosima::fastdds::dds::DomainParticipant* participant() const { return participant_; }
+
+private:
+    eprosima::fastdds::dds::Topic* topic(const std::string& name, const MessageOps& ops);
+    eprosima::fastdds::dds::DomainParticipant* participant_{nullptr};
+    eprosima::fastdds::dds::Publisher* publisher_{nullptr};
+    eprosima::fastdds::dds::Subscriber* subscriber_{nullptr};
+    std::map<std::string, eprosima::fastdds::dds::Topic*> topics_;
+};
+
+}  // namespace gdnav::runtime

@@ -1,0 +1,414 @@
+#include "runtime/dds_host.hpp"
+
+#include <array>
+#include <map>
+#include <set>
+
+#include <fastdds/dds/core/condition/WaitSet.hpp>
+#include <fastdds/dds/subscriber/SampleInfo.hpp>
+#include <spdlog/spdlog.h>
+
+#include "runtime/dds_context.hpp"
+#include "runtime/graph.hpp"
+#include "runtime/lockstep.hpp"
+#include "runtime/messages.hpp"
+#include "runtime/process_signals.hpp"
+
+namespace gdnav::runtime {
+
+using namespace eprosima::fastdds::dds;
+using eprosima::fastrtps::Duration_t;
+
+namespace {
+
+// Inbox of one input port: samples indexed by step (ring), or the latest sample for free-running producers.
+struct Channel {
+    InputBase* port{nullptr};
+    DataReader* reader{nullptr};
+    const MessageOps* ops{nullptr};
+    void* scratch{nullptr};
+    std::array<void*, kInboxRing> slot{};
+    std::array<std::uint64_t, kInboxRing> slot_step{};
+    std::array<bool, kInboxRing> full{};
+    void* latest{nullptr};
+    bool has_latest{false};
+    std::vector<std::uint32_t> producers;  // member indices in the table
+    bool free{false};                      // produced by a free-running member
+    bool lost{false};                      // every producer declared dead
+};
+
+struct Local {
+    Component* comp{nullptr};
+    std::uint32_t index{0};
+    std::uint64_t next_step{0};
+    std::vector<Channel*> inputs;
+    std::vector<std::pair<OutputBase*, DataWriter*>> outputs;
+};
+
+}  // namespace
+
+struct DdsHost::Impl {
+    const RunConfig& rc;
+    HostOptions opt;
+    std::vector<std::unique_ptr<Component>> owned;
+    std::vector<Local> locals;
+    std::vector<std::unique_ptr<Channel>> channels;
+    std::unique_ptr<DdsContext> dds;
+    DataReader* tick_reader{nullptr};
+    DataReader* control_reader{nullptr};
+    DataReader* status_reader{nullptr};
+    DataWriter* done_writer{nullptr};
+    DataWriter* status_writer{nullptr};
+    WaitSet waitset;
+
+    enum class Phase { Announce, Matching, Ready, Running } phase{Phase::Announce};
+    std::vector<msg::MemberInfo> table;
+    std::uint64_t tick_step{0};
+    bool have_tick{false};
+    std::uint64_t dead_mask{0};
+    double last_clock_s{0.0};
+    double start_s{0.0};
+    double next_heartbeat_s{0.0};
+    std::string host_id{host_identity()};
+
+    msg::Tick tick;
+    msg::RunControl control;
+    msg::ComponentStatus status_in;
+    msg::ComponentStatus status_out;
+    msg::StepDone done;
+
+    Impl(const RunConfig& r, std::vector<std::unique_ptr<Component>> m, HostOptions o)
+        : rc(r), opt(o), owned(std::move(m)) {}
+
+    ~Impl() {
+        for (auto& c : channels) {
+            c->ops->destroy(c->scratch);
+            c->ops->destroy(c->latest);
+            for (void* s : c->slot) c->ops->destroy(s);
+        }
+        dds.reset();
+    }
+
+    void setup() {
+        std::vector<Component*> raw;
+        for (auto& c : owned) raw.push_back(c.get());
+        const Graph g = build_graph(raw);  // local step order (zero-lag edges inside this process)
+        std::string pname = "gdnav";
+        for (auto* c : g.order) pname += "." + c->name();
+        dds = std::make_unique<DdsContext>(rc.domain_id, rc.dds_profile, pname);
+        tick_reader = dds->reader(topics::kTick, message_ops<msg::Tick>(), kControlReaderProfile);
+        control_reader = dds->reader(topics::kRunControl, message_ops<msg::RunControl>(), kLatchedReaderProfile);
+        status_reader = dds->reader(topics::kStatus, message_ops<msg::ComponentStatus>(), kControlReaderProfile);
+        done_writer = dds->writer(topics::kStepDone, message_ops<msg::StepDone>(), kControlWriterProfile);
+        status_writer = dds->writer(topics::kStatus, message_ops<msg::ComponentStatus>(), kControlWriterProfile);
+        for (Component* c : g.order) {
+            Local l;
+            l.comp = c;
+            for (InputBase* in : c->inputs()) {
+                auto ch = std::make_unique<Channel>();
+                ch->port = in;
+                ch->ops = &in->ops();
+                ch->reader = dds->reader(in->topic(), in->ops(), kDataReaderProfile);
+                ch->scratch = ch->ops->create();
+                ch->latest = ch->ops->create();
+                for (auto& s : ch->slot) s = ch->ops->create();
+                l.inputs.push_back(ch.get());
+                channels.push_back(std::move(ch));
+            }
+            for (OutputBase* o : c->outputs())
+                l.outputs.emplace_back(o, dds->writer(o->topic(), o->ops(), kDataWriterProfile));
+            locals.push_back(std::move(l));
+        }
+        for (DataReader* r : all_readers()) {
+            StatusCondition& cond = r->get_statuscondition();
+            cond.set_enabled_statuses(StatusMask::data_available());
+            waitset.attach_condition(cond);
+        }
+    }
+
+    std::vector<DataReader*> all_readers() {
+        std::vector<DataReader*> v{tick_reader, control_reader, status_reader};
+        for (auto& c : channels) v.push_back(c->reader);
+        return v;
+    }
+
+    void send_status(const Local& l, msg::StatusKind kind, const std::string& message) {
+        status_out.run_id(rc.info.run_index);
+        status_out.step(l.next_step == 0 ? 0 : l.next_step - 1);
+        status_out.t_s(rc.info.time_of(status_out.step()));
+        status_out.member(l.comp->name());
+        status_out.host(host_id);
+        status_out.kind(kind);
+        status_out.inputs(join_topics(input_topics(*l.comp)));
+        status_out.outputs(join_topics(output_topics(*l.comp)));
+        status_out.free_running(opt.free_running);
+        status_out.message(message);
+        status_writer->write(&status_out);
+    }
+
+    void heartbeat(double now) {
+        if (now < next_heartbeat_s) return;
+        next_heartbeat_s = now + kHeartbeatPeriodS;
+        const auto kind = phase == Phase::Ready ? msg::STATUS_READY : msg::STATUS_HEARTBEAT;
+        for (const auto& l : locals) send_status(l, kind, "");
+    }
+
+    // Returns false when the run must end; `code` is then the exit code.
+    bool read_control(int& code) {
+        SampleInfo info;
+        while (control_reader->take_next_sample(&control, &info) == ReturnCode_t::RETCODE_OK) {
+            if (!info.valid_data || control.run_id() != rc.info.run_index) continue;
+            switch (control.command()) {
+                case msg::RUN_CONFIGURE:
+                    if (phase == Phase::Announce) configure_from_table();
+                    break;
+                case msg::RUN_STOP:
+                    spdlog::debug("host {}: STOP received", host_id);
+                    code = kExitOk;
+                    return false;
+                case msg::RUN_ABORT:
+                    spdlog::error("run aborted by the clock: {}", control.reason().to_string());
+                    code = kExitAborted;
+                    return false;
+                default:
+                    break;
+            }
+        }
+        return true;
+    }
+
+    void configure_from_table() {
+        table.assign(control.members().begin(), control.members().end());
+        for (auto& l : locals) {
+            l.index = UINT32_MAX;
+            for (std::uint32_t i = 0; i < table.size(); ++i)
+                if (table[i].name().to_string() == l.comp->name()) l.index = i;
+            if (l.index == UINT32_MAX) {
+                spdlog::error("member '{}' is not in the clock's member table", l.comp->name());
+                continue;
+            }
+            for (Channel* ch : l.inputs) {
+                ch->producers.clear();
+                for (std::uint32_t i = 0; i < table.size(); ++i) {
+                    const auto outs = split_topics(table[i].outputs().to_string());
+                    if (std::find(outs.begin(), outs.end(), ch->port->topic()) != outs.end()) {
+                        ch->producers.push_back(i);
+                        ch->free = ch->free || table[i].free_running();
+                    }
+                }
+                if (ch->producers.empty()) {
+                    spdlog::warn("member '{}': no member of this run produces '{}'; input treated as lost",
+                                 l.comp->name(), ch->port->topic());
+                    ch->lost = true;
+                    ch->port->mark_lost();
+                }
+                if (opt.free_running) ch->free = true;
+            }
+        }
+        phase = Phase::Matching;
+    }
+
+    bool all_matched() {
+        for (auto& l : locals) {
+            for (Channel* ch : l.inputs) {
+                SubscriptionMatchedStatus st;
+                ch->reader->get_subscription_matched_status(st);
+                if (st.current_count < static_cast<int>(ch->producers.size())) return false;
+            }
+            for (auto& [out, w] : l.outputs) {
+                int expected = 0;
+                for (const auto& m : table)
+                    for (const auto& t : split_topics(m.inputs().to_string())) expected += (t == out->topic());
+                PublicationMatchedStatus st;
+                w->get_publication_matched_status(st);
+                if (st.current_count < expected) return false;
+            }
+        }
+        SubscriptionMatchedStatus ts;
+        tick_reader->get_subscription_matched_status(ts);
+        PublicationMatchedStatus ds;
+        done_writer->get_publication_matched_status(ds);
+        return ts.current_count >= 1 && ds.current_count >= 1;
+    }
+
+    void read_ticks(double now) {
+        SampleInfo info;
+        while (tick_reader->take_next_sample(&tick, &info) == ReturnCode_t::RETCODE_OK) {
+            if (!info.valid_data || tick.stamp().run_id() != rc.info.run_index) continue;
+            last_clock_s = now;
+            if (!have_tick || tick.stamp().step() > tick_step) tick_step = tick.stamp().step();
+            have_tick = true;
+            phase = Phase::Running;
+            if ((tick.dead_mask() | dead_mask) != dead_mask) {
+                dead_mask |= tick.dead_mask();
+                apply_dead_mask();
+            }
+        }
+    }
+
+    void apply_dead_mask() {
+        for (auto& ch : channels) {
+            if (ch->lost || ch->producers.empty()) continue;
+            bool all_dead = true;
+            for (auto i : ch->producers) all_dead = all_dead && ((dead_mask >> i) & 1u);
+            if (all_dead) {
+                ch->lost = true;
+                ch->port->mark_lost();
+                spdlog::warn("input '{}' lost: its producer was declared dead", ch->port->topic());
+            }
+        }
+    }
+
+    void read_status(double now) {
+        SampleInfo info;
+        while (status_reader->take_next_sample(&status_in, &info) == ReturnCode_t::RETCODE_OK) {
+            if (info.valid_data && status_in.member().to_string() == kClockName && status_in.run_id() == rc.info.run_index)
+                last_clock_s = now;
+        }
+    }
+
+    void read_data(const Local& l, Channel& ch) {
+        SampleInfo info;
+        while (ch.reader->take_next_sample(ch.scratch, &info) == ReturnCode_t::RETCODE_OK) {
+            if (!info.valid_data || ch.ops->run_of(ch.scratch) != rc.info.run_index) continue;
+            if (ch.free) {
+                ch.ops->copy(ch.latest, ch.scratch);
+                ch.has_latest = true;
+                continue;
+            }
+            const std::uint64_t s = ch.ops->step_of(ch.scratch);
+            const std::uint64_t lag = static_cast<std::uint64_t>(ch.port->lag());
+            const std::uint64_t oldest = l.next_step >= lag ? l.next_step - lag : 0;
+            if (s < oldest) continue;
+            if (s >= oldest + kInboxRing) {
+                spdlog::warn("input '{}': sample of step {} is too far ahead of step {}; dropped", ch.port->topic(), s,
+                             l.next_step);
+                continue;
+            }
+            const std::size_t i = s % kInboxRing;
+            std::swap(ch.slot[i], ch.scratch);
+            ch.slot_step[i] = s;
+            ch.full[i] = true;
+        }
+    }
+
+    bool inputs_ready(const Local& l, std::uint64_t k) {
+        for (Channel* ch : l.inputs) {
+            if (ch->lost) {
+                ch->port->bind(nullptr);
+                continue;
+            }
+            if (ch->free) {
+                ch->port->bind(ch->has_latest ? ch->latest : nullptr);
+                continue;
+            }
+            const std::uint64_t lag = static_cast<std::uint64_t>(ch->port->lag());
+            if (k < lag) {
+                ch->port->bind(nullptr);
+                continue;
+            }
+            const std::uint64_t need = k - lag;
+            const std::size_t i = need % kInboxRing;
+            if (!ch->full[i] || ch->slot_step[i] != need) return false;
+            ch->port->bind(ch->slot[i]);
+        }
+        return true;
+    }
+
+    // Steps every local member that can; returns true if any stepped.
+    bool advance() {
+        bool any = false;
+        for (auto& l : locals) {
+            if (l.index == UINT32_MAX) continue;
+            while (have_tick && l.next_step <= tick_step + rc.window_steps && l.next_step < rc.info.steps) {
+                const std::uint64_t k = l.next_step;
+                for (Channel* ch : l.inputs) read_data(l, *ch);
+                if (!inputs_ready(l, k)) break;
+                const StepContext ctx{k, rc.info.time_of(k), rc.info.dt_s, k + 1 == rc.info.steps};
+                l.comp->step(ctx);
+                for (auto& [out, w] : l.outputs) {
+                    out->ops().set_stamp(out->data(), rc.info.run_index, k, ctx.t_s);
+                    w->write(out->data());
+                }
+                for (auto& m : l.comp->pending_status()) {
+                    spdlog::info("[{}] step {} t={:.2f} s: {}", l.comp->name(), k, ctx.t_s, m);
+                    send_status(l, msg::STATUS_MODE, m);
+                }
+                l.comp->pending_status().clear();
+                ++l.next_step;
+                if (!opt.free_running) {
+                    done.run_id(rc.info.run_index);
+                    done.step(k);
+                    done.member_index(l.index);
+                    done_writer->write(&done);
+                }
+                any = true;
+            }
+        }
+        return any;
+    }
+
+    int loop() {
+        start_s = steady_now_s();
+        last_clock_s = start_s;
+        ConditionSeq active;
+        const Duration_t slice(0, static_cast<std::uint32_t>(kWaitSliceS * 1e9));
+        int code = kExitOk;
+        while (true) {
+            waitset.wait(active, slice);
+            const double now = steady_now_s();
+            if (stop_requested()) {
+                spdlog::warn("host {}: stopped by signal {}", host_id, stop_signal());
+                code = kExitInterrupted;
+                break;
+            }
+            if (!read_control(code)) break;
+            read_status(now);
+            read_ticks(now);
+            for (auto& l : locals)
+                for (Channel* ch : l.inputs) read_data(l, *ch);
+            if (phase == Phase::Matching && all_matched()) {
+                phase = Phase::Ready;
+                next_heartbeat_s = 0.0;  // report READY at once
+            }
+            heartbeat(now);
+            while (advance()) {
+            }
+            if (phase == Phase::Announce || (phase != Phase::Running && !have_tick)) {
+                if (phase == Phase::Announce && now - start_s > rc.startup_timeout_s) {
+                    spdlog::error("no clock: no member table from the clock '{}' within {:.1f} s", kClockName,
+                                  rc.startup_timeout_s);
+                    code = kExitStartup;
+                    break;
+                }
+                if (phase != Phase::Announce && now - last_clock_s > rc.member_timeout_s) {
+                    spdlog::error("lost the clock '{}': no Tick or heartbeat for {:.1f} s before the start",
+                                  kClockName, now - last_clock_s);
+                    code = kExitLostClock;
+                    break;
+                }
+            } else if (now - last_clock_s > rc.member_timeout_s) {
+                spdlog::error("lost the clock '{}': no Tick or heartbeat for {:.1f} s (last Tick: step {})", kClockName,
+                              now - last_clock_s, tick_step);
+                code = kExitLostClock;
+                break;
+            }
+        }
+        for (auto& l : locals) {
+            if (code != kExitOk) send_status(l, msg::STATUS_EXIT, "exit code " + std::to_string(code));
+            l.comp->finish(code == kExitOk);
+        }
+        return code;
+    }
+};
+
+DdsHost::DdsHost(const RunConfig& rc, std::vector<std::unique_ptr<Component>> members, HostOptions opt)
+    : impl_(std::make_unique<Impl>(rc, std::move(members), opt)) {
+    impl_->setup();
+}
+
+DdsHost::~DdsHost() = default;
+
+int DdsHost::run() { return impl_->loop(); }
+
+}  // namespace gdnav::runtime

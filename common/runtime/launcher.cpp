@@ -1,0 +1,223 @@
+#include "runtime/launcher.hpp"
+
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <ctime>
+#include <fstream>
+#include <map>
+#include <thread>
+
+#include <spdlog/spdlog.h>
+
+#include "runtime/direct_executor.hpp"
+#include "runtime/lockstep.hpp"
+#include "runtime/process_signals.hpp"
+#include "runtime/shm_cleanup.hpp"
+
+namespace gdnav::runtime {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Child {
+    std::string name;
+    pid_t pid{0};
+    bool running{true};
+    int status{0};
+};
+
+pid_t spawn(const fs::path& exe, const std::vector<std::string>& args) {
+    std::vector<char*> argv;
+    argv.push_back(const_cast<char*>(exe.c_str()));
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    const pid_t parent = getpid();
+    const pid_t pid = fork();
+    if (pid < 0) throw std::runtime_error("fork failed");
+    if (pid == 0) {
+        prctl(PR_SET_PDEATHSIG, SIGTERM);  // never outlive the launcher
+        if (getppid() != parent) _exit(1);
+        execv(exe.c_str(), argv.data());
+        _exit(127);
+    }
+    return pid;
+}
+
+std::string describe(int status) {
+    if (WIFEXITED(status)) return "exit code " + std::to_string(WEXITSTATUS(status));
+    if (WIFSIGNALED(status)) return "killed by signal " + std::to_string(WTERMSIG(status));
+    return "status " + std::to_string(status);
+}
+
+void reap(std::vector<Child>& children, const std::function<void(Child&)>& on_exit) {
+    while (true) {
+        int st = 0;
+        const pid_t pid = waitpid(-1, &st, WNOHANG);
+        if (pid <= 0) return;
+        for (auto& c : children)
+            if (c.pid == pid && c.running) {
+                c.running = false;
+                c.status = st;
+                on_exit(c);
+            }
+    }
+}
+
+bool any_running(const std::vector<Child>& cs) {
+    for (const auto& c : cs)
+        if (c.running) return true;
+    return false;
+}
+
+void signal_all(std::vector<Child>& cs, int sig) {
+    for (auto& c : cs)
+        if (c.running) kill(c.pid, sig);
+}
+
+// Waits up to `seconds` for all children; returns true when none is left.
+bool wait_all(std::vector<Child>& cs, double seconds, const std::function<void(Child&)>& on_exit) {
+    const double end = steady_now_s() + seconds;
+    while (any_running(cs) && steady_now_s() < end) {
+        reap(cs, on_exit);
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    reap(cs, on_exit);
+    return !any_running(cs);
+}
+
+}  // namespace
+
+int run_direct(const RunConfig& rc, const ComponentRegistry& reg, bool progress, double* steps_per_s) {
+    auto comps = rc.build(reg);
+    DirectExecutor ex(std::move(comps), rc.info);
+    const double t0 = steady_now_s();
+    double next_log = t0 + 2.0;
+    ex.run(
+        [&](std::uint64_t k) {
+            if (!progress) return;
+            const double now = steady_now_s();
+            if (now < next_log) return;
+            next_log = now + 2.0;
+            const double sps = static_cast<double>(k) / (now - t0);
+            spdlog::info("step {}/{} ({:.0f}%), t = {:.1f} s, {:.0f} steps/s, {:.0f}x real time", k, rc.info.steps,
+                         100.0 * static_cast<double>(k) / static_cast<double>(rc.info.steps), rc.info.time_of(k), sps,
+                         sps * rc.info.dt_s);
+        },
+        1000);
+    const double wall = steady_now_s() - t0;
+    const double sps = static_cast<double>(rc.info.steps) / std::max(wall, 1e-9);
+    if (steps_per_s) *steps_per_s = sps;
+    if (progress)
+        spdlog::info("run complete: {} steps in {:.2f} s ({:.0f} steps/s, {:.0f}x real time)", rc.info.steps, wall, sps,
+                     sps * rc.info.dt_s);
+    if (!rc.out_dir.empty()) {
+        std::ofstream f(fs::path(rc.out_dir) / "clock_summary.yaml");
+        f << "completed: true\nsteps_done: " << rc.info.steps << "\nwall_s: " << wall << "\nsteps_per_s: " << sps
+          << "\ndead_members: []\nreproducible: true\n";
+    }
+    return kExitOk;
+}
+
+int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& opt) {
+    if (opt.layout != "direct" && opt.layout != "composed" && opt.layout != "distributed")
+        throw config::ConfigError("unknown layout '" + opt.layout + "' (allowed: direct, composed, distributed)");
+    if (!rc.domain_given) {
+        rc.domain_id = static_cast<int>(getpid() % 200) + 20;
+        RunOverrides o;
+        o.domain_id = rc.domain_id;
+        rc = RunConfig::parse(rc.to_yaml(), rc.origin, o);
+    }
+    // Validate everything before anything starts: build (construct + configure) every component.
+    (void)rc.build(reg);
+    fs::create_directories(rc.out_dir);
+    const fs::path run_yaml = fs::path(rc.out_dir) / "run.yaml";
+    {
+        std::ofstream f(run_yaml);
+        f << "# Resolved run configuration written by gdnav run (layout " << opt.layout << ")\n" << rc.to_yaml();
+    }
+    spdlog::info("run {} seed {} layout {}: {} steps of {} s -> {}", rc.info.run_index, rc.info.seed, opt.layout,
+                 rc.info.steps, rc.info.dt_s, rc.out_dir);
+    if (opt.layout == "direct") return run_direct(rc, reg, true);
+
+    const fs::path exe = opt.exe.empty() ? fs::read_symlink("/proc/self/exe") : opt.exe;
+    const std::time_t started = std::time(nullptr) - 1;
+    std::vector<Child> children;
+    const std::vector<std::string> common{"--config", run_yaml.string(), "--log-level", opt.log_level};
+    auto args = [&](std::vector<std::string> a) {
+        a.insert(a.end(), common.begin(), common.end());
+        return a;
+    };
+    install_stop_signal_handlers();
+    children.push_back({kClockName, spawn(exe, args({"clock"}))});
+    if (opt.layout == "distributed") {
+        for (const auto& m : rc.members) children.push_back({m.name, spawn(exe, args({"component", m.name}))});
+    } else {
+        std::string all;
+        for (const auto& m : rc.members) all += (all.empty() ? "" : ",") + m.name;
+        children.push_back({"composed", spawn(exe, args({"component", all}))});
+    }
+    {
+        std::ofstream f(fs::path(rc.out_dir) / "processes.yaml");
+        for (const auto& c : children) f << c.name << ": " << c.pid << "\n";
+    }
+
+    int clock_code = -1;
+    std::vector<std::string> failures;
+    auto on_exit = [&](Child& c) {
+        const bool ok = WIFEXITED(c.status) && WEXITSTATUS(c.status) == 0;
+        if (c.name == kClockName) clock_code = WIFEXITED(c.status) ? WEXITSTATUS(c.status) : 128 + WTERMSIG(c.status);
+        if (!ok) {
+            failures.push_back(c.name + " (" + describe(c.status) + ")");
+            spdlog::warn("process '{}' (pid {}) ended: {}", c.name, c.pid, describe(c.status));
+        }
+    };
+    bool interrupted = false;
+    while (any_running(children)) {
+        reap(children, on_exit);
+        if (stop_requested() && !interrupted) {
+            interrupted = true;
+            spdlog::warn("interrupted: stopping all processes of the run");
+            signal_all(children, SIGTERM);
+            if (!wait_all(children, 3.0, on_exit)) signal_all(children, SIGKILL);
+        }
+        if (clock_code >= 0 && any_running(children)) {
+            // The clock is gone: members exit by themselves within member_timeout_s; then enforce it.
+            if (!wait_all(children, rc.member_timeout_s + 3.0, on_exit)) {
+                spdlog::warn("members still running after the clock ended; terminating them");
+                signal_all(children, SIGTERM);
+                if (!wait_all(children, 2.0, on_exit)) signal_all(children, SIGKILL);
+            }
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    reap(children, on_exit);
+    const auto removed = clean_fastdds_shm(started);
+    if (!removed.empty()) spdlog::info("removed {} Fast DDS shared-memory files left by the run", removed.size());
+    if (interrupted) {
+        spdlog::error("run interrupted");
+        return kExitInterrupted;
+    }
+    if (clock_code != kExitOk) {
+        spdlog::error("run failed: the clock ended with code {}{}", clock_code,
+                      failures.empty() ? "" : "; failed processes: " + [&] {
+                          std::string s;
+                          for (const auto& f : failures) s += (s.empty() ? "" : ", ") + f;
+                          return s;
+                      }());
+        return clock_code > 0 ? clock_code : 1;
+    }
+    if (!failures.empty()) {
+        std::string s;
+        for (const auto& f : failures) s += (s.empty() ? "" : ", ") + f;
+        spdlog::warn("run completed without: {}", s);
+    }
+    spdlog::info("run completed; results in {}", rc.out_dir);
+    return kExitOk;
+}
+
+}  // namespace gdnav::runtime

@@ -1,0 +1,39 @@
+#pragma once
+// Lockstep protocol constants and small helpers shared by the clock and the DDS hosts.
+//
+//   1. Every member publishes ComponentStatus heartbeats (10 Hz wall time) announcing its inputs and outputs.
+//   2. When every configured member is present, the clock publishes RunControl CONFIGURE with the member table.
+//   3. Each host waits until its readers and writers have matched every peer the table implies, then reports READY.
+//   4. The clock publishes Tick(0) once every member is READY and its Tick writer reaches every host.
+//   5. A member steps k when every lockstep input of step k (k-1 for Lag::Previous) is in its inbox, publishes its
+//      outputs and StepDone(k). The clock sends Tick(k+1) when every live barrier member reported StepDone(k).
+//   6. Heartbeats that stop for member_timeout_s declare a member dead: the clock re-sends Tick(k) with the member
+//      in dead_mask; consumers stop waiting for its topics. Losing an essential member aborts the run.
+//   7. Members that hear neither Tick nor clock heartbeat for member_timeout_s exit non-zero naming the clock.
+//   8. After the last step the clock publishes RunControl STOP; everybody finishes and exits 0.
+#include <chrono>
+#include <cstdint>
+#include <string>
+
+namespace gdnav::runtime {
+
+inline constexpr double kHeartbeatPeriodS = 0.1;
+inline constexpr double kWaitSliceS = 0.02;  // longest blocking wait in a loop (signals, heartbeats, timeouts)
+inline constexpr std::size_t kInboxRing = 16;
+inline constexpr const char* kClockName = "clock";
+
+// Exit codes of runtime processes.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitConfig = 2;
+inline constexpr int kExitAborted = 3;
+inline constexpr int kExitLostClock = 4;
+inline constexpr int kExitStartup = 5;
+inline constexpr int kExitInterrupted = 130;
+
+inline double steady_now_s() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+std::string host_identity();  // hostname:pid
+
+}  // namespace gdnav::runtime

@@ -1,0 +1,138 @@
+#include "runtime/run_config.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#ifndef GDNAV_SOURCE_CONFIG_DIR
+#define GDNAV_SOURCE_CONFIG_DIR "config"
+#endif
+
+namespace gdnav::runtime {
+
+using config::Config;
+using config::ConfigError;
+using config::Range;
+
+std::filesystem::path config_dir() {
+    if (const char* env = std::getenv("GDNAV_CONFIG_DIR"); env && *env) return env;
+    return GDNAV_SOURCE_CONFIG_DIR;
+}
+
+std::filesystem::path resolve_scenario(const std::string& s) {
+    std::filesystem::path p(s);
+    if (std::filesystem::exists(p) && std::filesystem::is_regular_file(p)) return p;
+    const auto named = config_dir() / "scenarios" / (s + ".yaml");
+    if (std::filesystem::exists(named)) return named;
+    throw ConfigError("config error: scenario '" + s + "': no such file and no " + named.string());
+}
+
+RunConfig RunConfig::load(const std::filesystem::path& file, const RunOverrides& o) {
+    std::ifstream in(file);
+    if (!in) throw ConfigError("config error: " + file.string() + ": cannot open file");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return parse(ss.str(), file.string(), o);
+}
+
+RunConfig RunConfig::parse(const std::string& text, const std::string& origin, const RunOverrides& o) {
+    // Parse once to apply overrides on the tree, then validate the resulting document.
+    Config probe = Config::parse(text, origin);
+    YAML::Node root = YAML::Clone(probe.node());
+    if (!root["run"] || !root["run"].IsMap())
+        throw ConfigError("config error: " + origin + ": key 'run': missing (required)");
+    if (o.seed) root["run"]["seed"] = *o.seed;
+    if (o.run_index) root["run"]["run_index"] = *o.run_index;
+    if (o.out_dir) root["run"]["out_dir"] = *o.out_dir;
+    if (o.realtime) root["run"]["realtime"] = *o.realtime;
+    if (o.domain_id) root["run"]["domain_id"] = *o.domain_id;
+    if (o.steps) {
+        root["run"].remove("duration_s");
+        root["run"]["steps"] = *o.steps;
+    }
+
+    RunConfig rc;
+    rc.origin = origin;
+    rc.root_ = root;
+    const Config top = Config::wrap(root, origin);
+    const Config run = top.child("run");
+    rc.info.seed = run.get_uint64("seed");
+    rc.info.run_index = run.has("run_index") ? run.get_uint64("run_index") : 0;
+    rc.info.dt_s = run.get_double("dt_s", 0.01, Range{1e-4, 1.0});
+    rc.info.t0_s = run.get_double("t0_s", 0.0, Range{-1e6, 1e6});
+    if (run.has("steps") && run.has("duration_s")) run.fail("steps", "give either steps or duration_s, not both");
+    if (run.has("steps")) {
+        rc.info.steps = static_cast<std::uint64_t>(run.get_int("steps", 1, 100'000'000));
+    } else {
+        const double d = run.get_double("duration_s", Range{rc.info.dt_s, 1e6});
+        rc.info.steps = static_cast<std::uint64_t>(std::llround(d / rc.info.dt_s)) + 1;
+    }
+    rc.realtime = run.get_double("realtime", 0.0, Range{0.0, 1e6});
+    rc.member_timeout_s = run.get_double("member_timeout_s", 1.5, Range{0.2, 60.0});
+    rc.startup_timeout_s = run.get_double("startup_timeout_s", 30.0, Range{1.0, 3600.0});
+    rc.stall_timeout_s = run.get_double("stall_timeout_s", 60.0, Range{1.0, 86400.0});
+    rc.window_steps = static_cast<std::uint64_t>(run.get_int("window_steps", 4, 0, 8));
+    if (rc.realtime > 0.0) rc.window_steps = 0;
+    rc.domain_given = run.has("domain_id");
+    rc.domain_id = static_cast<int>(run.get_int("domain_id", 0, 0, 232));
+    rc.essential = run.has("essential") ? run.get_strings("essential") : std::vector<std::string>{};
+    rc.dds_profile = run.get_string("dds_profile", "dds/gdnav_profiles.xml");
+    if (rc.dds_profile.is_relative()) rc.dds_profile = config_dir() / rc.dds_profile;
+    rc.out_dir = run.get_string("out_dir", "out/run");
+    rc.info.out_dir = rc.out_dir;
+    run.finish();
+
+    const Config comps = top.child("components");
+    std::set<std::string> names;
+    for (const auto& name : comps.keys()) {
+        if (name == "clock") comps.fail(name, "'clock' is reserved for the lockstep clock");
+        const Config c = comps.child(name);
+        MemberSpec m{name, c.get_string("type"), c};
+        names.insert(name);
+        rc.members.push_back(std::move(m));
+    }
+    if (rc.members.empty()) comps.fail("", "at least one component is required");
+    if (rc.members.size() > 63) comps.fail("", "at most 63 components per run");
+    for (const auto& e : rc.essential)
+        if (!names.count(e)) run.fail("essential", "'" + e + "' is not a component of this run");
+    // Only 'run' and 'components' at top level; each component section is checked by build().
+    for (const auto& k : top.keys())
+        if (k != "run" && k != "components") top.fail(k, "unknown key (allowed: run, components)");
+    return rc;
+}
+
+std::vector<std::unique_ptr<Component>> RunConfig::build(const ComponentRegistry& reg,
+                                                         const std::vector<std::string>& only) const {
+    std::vector<std::unique_ptr<Component>> out;
+    for (const auto& m : members) {
+        if (!only.empty() && std::find(only.begin(), only.end(), m.name) == only.end()) continue;
+        if (!reg.has(m.type)) {
+            std::string known;
+            for (const auto& t : reg.types()) known += (known.empty() ? "" : ", ") + t;
+            m.cfg.fail("type", "unknown component type '" + m.type + "' (known: " + known + ")");
+        }
+        auto c = reg.create(m.type, m.name);
+        rnd::Stream stream = rnd::Stream::derive(info.seed, info.run_index, m.name);
+        c->configure(m.cfg, info, stream);
+        m.cfg.finish();
+        out.push_back(std::move(c));
+    }
+    for (const auto& n : only) {
+        bool found = false;
+        for (const auto& m : members) found = found || m.name == n;
+        if (!found) throw ConfigError("config error: " + origin + ": no component named '" + n + "'");
+    }
+    return out;
+}
+
+std::string RunConfig::to_yaml() const {
+    YAML::Emitter em;
+    em.SetDoublePrecision(17);
+    em << root_;
+    return std::string(em.c_str()) + "\n";
+}
+
+}  // namespace gdnav::runtime

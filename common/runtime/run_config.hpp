@@ -1,0 +1,85 @@
+#pragma once
+// The run configuration: one YAML document that every process of a run reads (the launcher writes the resolved
+// file to <out>/run.yaml). Layout:
+//
+//   run:
+//     seed: 1                  # master seed
+//     run_index: 0             # index inside a batch
+//     steps: 2000              # number of 10-ms steps (or duration_s)
+//     dt_s: 0.01
+//     t0_s: 0.0                # simulated time of step 0
+//     realtime: 0              # pacing factor (0 = as fast as possible, 1 = wall time, 10 = 10x)
+//     member_timeout_s: 1.5    # wall-clock silence after which a member (or the clock) is declared dead
+//     startup_timeout_s: 30    # wall-clock wait for all members before step 0
+//     stall_timeout_s: 60      # wall-clock wait without progress while everybody is alive
+//     window_steps: 4          # how far a member may run ahead of the last Tick (0 = strict lockstep;
+//                              # forced to 0 when realtime > 0); see docs/runtime.md
+//     essential: [plant]       # members whose loss aborts the run
+//     domain_id: 0             # DDS domain (the launcher picks a free one when absent)
+//     dds_profile: dds/gdnav_profiles.xml   # relative to the config directory
+//     out_dir: out/run
+//   components:
+//     plant: {type: chain_plant, ...component parameters...}
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "config/config.hpp"
+#include "runtime/component.hpp"
+#include "runtime/registry.hpp"
+
+namespace gdnav::runtime {
+
+// Where config/ lives: $GDNAV_CONFIG_DIR, else the source tree's config/ (compiled in).
+std::filesystem::path config_dir();
+// Resolves a scenario name (config/scenarios/<name>.yaml) or a file path.
+std::filesystem::path resolve_scenario(const std::string& name_or_file);
+
+struct RunOverrides {
+    std::optional<std::uint64_t> seed;
+    std::optional<std::uint64_t> run_index;
+    std::optional<std::string> out_dir;
+    std::optional<double> realtime;
+    std::optional<int> domain_id;
+    std::optional<std::uint64_t> steps;
+};
+
+struct MemberSpec {
+    std::string name;
+    std::string type;
+    config::Config cfg;  // the component's section (its "type" key already read)
+};
+
+class RunConfig {
+public:
+    static RunConfig load(const std::filesystem::path& file, const RunOverrides& overrides = {});
+    static RunConfig parse(const std::string& yaml_text, const std::string& origin, const RunOverrides& o = {});
+
+    // Creates and configures every component (validating its section). Throws ConfigError on the first problem.
+    [[nodiscard]] std::vector<std::unique_ptr<Component>> build(const ComponentRegistry& reg,
+                                                                const std::vector<std::string>& only = {}) const;
+    // The resolved document (overrides applied) as YAML text.
+    [[nodiscard]] std::string to_yaml() const;
+
+    RunInfo info;
+    double realtime{0.0};
+    double member_timeout_s{1.5};
+    double startup_timeout_s{30.0};
+    double stall_timeout_s{60.0};
+    std::uint64_t window_steps{4};
+    int domain_id{0};
+    bool domain_given{false};
+    std::vector<std::string> essential;
+    std::filesystem::path dds_profile;
+    std::string out_dir;
+    std::vector<MemberSpec> members;  // in file order
+    std::string origin;
+
+private:
+    YAML::Node root_;
+};
+
+}  // namespace gdnav::runtime

@@ -1,0 +1,11 @@
+// gdnav-testchain: the gdnav command line with the test chain components (tests only).
+#include "chain_components.hpp"
+#include "cli.hpp"
+#include "recorder.hpp"
+
+int main(int argc, char** argv) {
+    gdnav::runtime::ComponentRegistry reg;
+    gdnav::recorder::register_recorder(reg);
+    gdnav::testchain::register_chain(reg);
+    return gdnav::app::cli_main(argc, argv, reg, "gdnav-testchain");
+}
