@@ -23,11 +23,20 @@ std::filesystem::path config_dir() {
 }
 
 std::filesystem::path resolve_scenario(const std::string& s) {
-    std::filesystem::path p(s);
-    if (std::filesystem::exists(p) && std::filesystem::is_regular_file(p)) return p;
-    const auto named = config_dir() / "scenarios" / (s + ".yaml");
+    const std::filesystem::path p(s);
+    const bool looks_like_file = s.find('/') != std::string::npos || p.extension() == ".yaml";
+    if (looks_like_file) {
+        if (!std::filesystem::is_regular_file(p)) throw ConfigError("config error: " + s + ": cannot open file");
+        return p;
+    }
+    const auto dir = config_dir() / "scenarios";
+    const auto named = dir / (s + ".yaml");
     if (std::filesystem::exists(named)) return named;
-    throw ConfigError("config error: scenario '" + s + "': no such file and no " + named.string());
+    std::string known;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(dir, ec))
+        if (e.path().extension() == ".yaml") known += (known.empty() ? "" : ", ") + e.path().stem().string();
+    throw ConfigError("config error: scenario '" + s + "' not found in " + dir.string() + " (available: " + known + ")");
 }
 
 RunConfig RunConfig::load(const std::filesystem::path& file, const RunOverrides& o) {

@@ -57,8 +57,8 @@ std::set<std::string> paths_in_use(const fs::path& dir) {
 }
 }  // namespace
 
-std::vector<std::string> clean_fastdds_shm(std::time_t since, const fs::path& dir) {
-    std::vector<std::string> removed;
+std::vector<std::string> stale_fastdds_shm(std::time_t since, const fs::path& dir) {
+    std::vector<std::string> stale;
     const auto used = paths_in_use(dir);
     const uid_t me = geteuid();
     for (const auto& n : list_fastdds_shm(dir).names) {
@@ -68,8 +68,16 @@ std::vector<std::string> clean_fastdds_shm(std::time_t since, const fs::path& di
         if (st.st_uid != me) continue;
         if (st.st_ctime < since) continue;  // created before this run started: not ours
         if (used.count(p.string())) continue;
+        stale.push_back(n);
+    }
+    return stale;
+}
+
+std::vector<std::string> clean_fastdds_shm(std::time_t since, const fs::path& dir) {
+    std::vector<std::string> removed;
+    for (const auto& n : stale_fastdds_shm(since, dir)) {
         std::error_code ec;
-        if (fs::remove(p, ec)) removed.push_back(n);
+        if (fs::remove(dir / n, ec)) removed.push_back(n);
     }
     if (!removed.empty()) spdlog::debug("removed {} stale Fast DDS shared-memory files", removed.size());
     return removed;

@@ -17,6 +17,8 @@ struct ShmSnapshot {
 bool is_fastdds_shm_name(const std::string& name);
 // Fast DDS files in `dir` (default /dev/shm).
 ShmSnapshot list_fastdds_shm(const std::filesystem::path& dir = "/dev/shm");
+// Stale files as described above (listed, not removed).
+std::vector<std::string> stale_fastdds_shm(std::time_t since, const std::filesystem::path& dir = "/dev/shm");
 // Removes stale files as described above; returns the names removed.
 std::vector<std::string> clean_fastdds_shm(std::time_t since, const std::filesystem::path& dir = "/dev/shm");
 

@@ -1,0 +1,177 @@
+#include "sensors/model/suite.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <limits>
+
+namespace gdnav::sensors {
+
+using config::Config;
+using config::ConfigError;
+using config::Range;
+
+namespace {
+
+std::string available_grades(const std::filesystem::path& dir) {
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+        if (e.path().extension() == ".yaml") names.push_back(e.path().stem().string());
+    }
+    std::sort(names.begin(), names.end());
+    std::string s;
+    for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
+    return s.empty() ? "none" : s;
+}
+
+// Reads `<group>: {grade: <name>, ...}` and returns the grade name.
+std::string grade_name(const Config& group) {
+    const std::string g = group.get_string("grade");
+    const bool ok = !g.empty() && std::all_of(g.begin(), g.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+    });
+    if (!ok) group.fail("grade", "must be a grade name (letters, digits, '_', '-'), got '" + g + "'");
+    return g;
+}
+
+}  // namespace
+
+Config load_grade_file(const std::filesystem::path& grades_dir, const std::string& group, const std::string& grade) {
+    const auto file = grades_dir / group / (grade + ".yaml");
+    if (!std::filesystem::exists(file)) {
+        throw ConfigError("config error: " + file.string() + ": no grade '" + grade + "' for " + group +
+                          " (available: " + available_grades(grades_dir / group) + ")");
+    }
+    return Config::load(file);
+}
+
+PlatformParams parse_platform(const Config& cfg) {
+    PlatformParams p;
+    p.imu_position_m = cfg.get_vec3("imu_position_m", Range{-10.0, 10.0});
+    p.imu_position_error_m = cfg.get_double("imu_position_error_m", Range{0.0, 1.0});
+    p.mounting_sigma_rad = cfg.get_vec3("mounting_sigma_deg", Range{0.0, 30.0}) * math::kDeg;
+    p.mounting_estimate_error_rad = cfg.get_angle_deg("mounting_estimate_error_deg", Range{0.0, 30.0});
+    p.cg_full_m = cfg.get_vec3("cg_full_m", Range{-10.0, 10.0});
+    p.cg_empty_m = cfg.get_vec3("cg_empty_m", Range{-10.0, 10.0});
+    p.mass_full_kg = cfg.get_double("mass_full_kg", Range::positive());
+    p.mass_empty_kg = cfg.get_double("mass_empty_kg", Range{0.0, p.mass_full_kg});
+    cfg.finish();
+    return p;
+}
+
+SensorSuiteParams parse_sensor_suite(const Config& cfg, const std::filesystem::path& grades_dir_in) {
+    std::filesystem::path grades_dir = grades_dir_in;
+    if (cfg.has("grades_dir")) grades_dir = grades_dir_in / cfg.get_string("grades_dir");
+
+    SensorSuiteParams s;
+    const double dt = cfg.get_double("sample_period_s", Range{1.0e-4, 1.0});
+    const double t0 = cfg.get_double("start_time_s", Range{-1.0e7, 1.0e7});
+
+    const Config gyr = cfg.child("gyroscopes");
+    s.gyr_grade = grade_name(gyr);
+    gyr.finish();
+    s.inertial.gyr = parse_gyro_grade(load_grade_file(grades_dir, "gyroscopes", s.gyr_grade));
+
+    const Config acc = cfg.child("accelerometers");
+    s.acc_grade = grade_name(acc);
+    acc.finish();
+    s.inertial.acc = parse_acc_grade(load_grade_file(grades_dir, "accelerometers", s.acc_grade));
+
+    // Paper: 100 (baseline), 300 and 1000. The soft pull zone (20 steps) needs L >= 40.
+    s.inertial.bias_drift_band = cfg.get_double("bias_drift_band", Range{40.0, 1.0e9});
+    s.inertial.platform = parse_platform(cfg.child("platform"));
+    s.inertial.dt_s = dt;
+
+    const Config mag = cfg.child("magnetometers");
+    s.mag_grade = grade_name(mag);
+    mag.finish();
+    s.mag.grade = parse_mag_grade(load_grade_file(grades_dir, "magnetometers", s.mag_grade));
+    s.mag.dt_s = dt;
+
+    const Config air = cfg.child("air_data");
+    s.air_grade = grade_name(air);
+    air.finish();
+    s.air.grade = parse_air_grade(load_grade_file(grades_dir, "air_data", s.air_grade));
+
+    const Config atm = cfg.child("atmospheric");
+    s.atm_grade = grade_name(atm);
+    atm.finish();
+    s.atm.grade = parse_atm_grade(load_grade_file(grades_dir, "atmospheric", s.atm_grade));
+
+    const Config gnss = cfg.child("gnss");
+    s.gnss_grade = grade_name(gnss);
+    if (gnss.has("loss_time_s")) s.gnss.loss_time_s = gnss.get_double("loss_time_s", Range{-1.0e7, 1.0e7});
+    gnss.finish();
+    s.gnss.grade = parse_gnss_grade(load_grade_file(grades_dir, "gnss", s.gnss_grade));
+    s.gnss.t0_s = t0;
+    s.gnss.dt_s = dt;
+    const double steps_per_fix = s.gnss.grade.fix_period_s / dt;
+    if (std::abs(steps_per_fix - std::round(steps_per_fix)) > 1.0e-9 * steps_per_fix) {
+        cfg.fail("sample_period_s", "the GNSS fix period must be a whole number of sensor steps");
+    }
+    cfg.finish();
+    return s;
+}
+
+SensorSuiteParams load_sensor_suite(const std::filesystem::path& suite_file) {
+    const Config cfg = Config::load(suite_file);
+    return parse_sensor_suite(cfg, suite_file.parent_path());
+}
+
+std::vector<std::pair<std::string, double>> list_parameters(const SensorSuiteParams& s) {
+    std::vector<std::pair<std::string, double>> out;
+    auto triad = [&out](const std::string& p, const TriadGrade& g) {
+        out.emplace_back(p + ".bias_drift", g.bias_drift);
+        out.emplace_back(p + ".system_noise", g.system_noise);
+        out.emplace_back(p + ".scale_factor", g.scale_factor);
+        out.emplace_back(p + ".cross_coupling", g.cross_coupling);
+        out.emplace_back(p + ".bias_offset", g.bias_offset);
+    };
+    auto scalar = [&out](const std::string& p, const ScalarGrade& g) {
+        out.emplace_back(p + ".noise", g.noise);
+        out.emplace_back(p + ".bias_offset", g.bias_offset);
+    };
+    auto vec = [&out](const std::string& p, const math::Vec3& v) {
+        for (int i = 0; i < 3; ++i) out.emplace_back(p + "[" + std::to_string(i) + "]", v[i]);
+    };
+    triad("gyr", s.inertial.gyr);
+    triad("acc", s.inertial.acc);
+    out.emplace_back("inertial.bias_drift_band", s.inertial.bias_drift_band);
+    out.emplace_back("inertial.dt_s", s.inertial.dt_s);
+    const PlatformParams& p = s.inertial.platform;
+    vec("platform.imu_position_m", p.imu_position_m);
+    out.emplace_back("platform.imu_position_error_m", p.imu_position_error_m);
+    vec("platform.mounting_sigma_rad", p.mounting_sigma_rad);
+    out.emplace_back("platform.mounting_estimate_error_rad", p.mounting_estimate_error_rad);
+    vec("platform.cg_full_m", p.cg_full_m);
+    vec("platform.cg_empty_m", p.cg_empty_m);
+    out.emplace_back("platform.mass_full_kg", p.mass_full_kg);
+    out.emplace_back("platform.mass_empty_kg", p.mass_empty_kg);
+    out.emplace_back("mag.system_noise_nT_rts", s.mag.grade.system_noise_nT_rts);
+    out.emplace_back("mag.scale_factor", s.mag.grade.scale_factor);
+    out.emplace_back("mag.cross_coupling", s.mag.grade.cross_coupling);
+    out.emplace_back("mag.hard_iron_nT", s.mag.grade.hard_iron_nT);
+    out.emplace_back("mag.bias_offset_nT", s.mag.grade.bias_offset_nT);
+    out.emplace_back("mag.dt_s", s.mag.dt_s);
+    scalar("air.tas_mps", s.air.grade.tas_mps);
+    scalar("air.aoa_rad", s.air.grade.aoa_rad);
+    scalar("air.aos_rad", s.air.grade.aos_rad);
+    scalar("atm.p_Pa", s.atm.grade.p_Pa);
+    scalar("atm.T_K", s.atm.grade.T_K);
+    const GnssGrade& g = s.gnss.grade;
+    out.emplace_back("gnss.horizontal_m", g.horizontal_m);
+    out.emplace_back("gnss.vertical_m", g.vertical_m);
+    out.emplace_back("gnss.velocity_mps", g.velocity_mps);
+    out.emplace_back("gnss.iono_step_m", g.iono_step_m);
+    out.emplace_back("gnss.iono_initial_steps", g.iono_initial_steps);
+    out.emplace_back("gnss.iono_band_steps", g.iono_band_steps);
+    out.emplace_back("gnss.iono_update_fixes", static_cast<double>(g.iono_update_fixes));
+    out.emplace_back("gnss.fix_period_s", g.fix_period_s);
+    out.emplace_back("gnss.t0_s", s.gnss.t0_s);
+    out.emplace_back("gnss.dt_s", s.gnss.dt_s);
+    out.emplace_back("gnss.loss_time_s", s.gnss.loss_time_s.value_or(std::numeric_limits<double>::infinity()));
+    return out;
+}
+
+}  // namespace gdnav::sensors

@@ -1,0 +1,70 @@
+// Malformed configs: non-zero exit, one clear error line naming file and key, and nothing started.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "process_util.hpp"
+
+using namespace gdnav::testing;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Case {
+    const char* name;
+    std::string yaml;          // empty: the file does not exist
+    const char* must_contain;  // part of the error line
+};
+
+std::string chain_with(const std::string& run_extra, const std::string& plant) {
+    return "run:\n  seed: 1\n  steps: 100\n" + run_extra +
+           "components:\n"
+           "  chain_plant: " + plant + "\n"
+           "  chain_sensor: {type: chain_sensor, sigma_m: 0.1}\n"
+           "  chain_filter: {type: chain_filter, alpha: 0.2, beta: 0.02}\n"
+           "  chain_controller: {type: chain_controller, kp: 1.0, kd: 1.5, target_m: 0.0}\n";
+}
+const std::string kPlant = "{type: chain_plant, sigma_w_mps2: 0.5, damping_per_s: 0.2, x0_m: 3.0}";
+
+}  // namespace
+
+TEST(ConfigErrors, EachMalformedConfigGivesOneErrorAndStartsNothing) {
+    const std::vector<Case> cases{
+        {"missing file", "", "cannot open file"},
+        {"malformed yaml", "run: {seed: 1\ncomponents: [", "malformed YAML"},
+        {"unknown key", chain_with("  sede: 3\n", kPlant), "key 'run.sede': unknown key"},
+        {"wrong type", chain_with("", "{type: chain_plant, sigma_w_mps2: abc, damping_per_s: 0.2, x0_m: 3.0}"),
+         "key 'components.chain_plant.sigma_w_mps2': must be a number"},
+        {"out of range", chain_with("", "{type: chain_plant, sigma_w_mps2: -0.5, damping_per_s: 0.2, x0_m: 3.0}"),
+         "outside allowed range [0, inf)"},
+        {"missing key", chain_with("", "{type: chain_plant, sigma_w_mps2: 0.5, x0_m: 3.0}"),
+         "key 'components.chain_plant.damping_per_s': missing"},
+        {"unknown component type", chain_with("", "{type: chain_plantt}"), "unknown component type 'chain_plantt'"},
+        {"out-of-range run value", chain_with("  member_timeout_s: 0\n", kPlant), "key 'run.member_timeout_s'"},
+        {"unknown recorder topic",
+         chain_with("", kPlant) + "  recorder: {type: recorder, topics: [chain/nope]}\n", "unknown topic 'chain/nope'"},
+    };
+    for (const auto& c : cases) {
+        const auto dir = temp_dir("cfg");
+        const fs::path file = dir / "scenario.yaml";
+        if (!c.yaml.empty()) std::ofstream(file) << c.yaml;
+        const auto out = dir / "out";
+        const Result r = run({testchain_exe(), "run", "--scenario", file.string(), "--layout", "distributed", "--out",
+                              out.string()},
+                             30.0);
+        SCOPED_TRACE(c.name);
+        EXPECT_NE(r.exit_code, 0) << r.output;
+        // Exactly one line of output: the error.
+        std::size_t lines = 0;
+        for (char ch : r.output) lines += (ch == '\n');
+        EXPECT_EQ(lines, 1u) << r.output;
+        EXPECT_NE(r.output.find("error"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find(c.must_contain), std::string::npos) << r.output;
+        if (!c.yaml.empty()) {
+            EXPECT_NE(r.output.find(file.string()), std::string::npos) << r.output;
+        }
+        // Nothing started: no process table, no resolved config.
+        EXPECT_FALSE(fs::exists(out / "processes.yaml"));
+        EXPECT_FALSE(fs::exists(out / "run.yaml"));
+    }
+}

@@ -1,0 +1,120 @@
+#include "process_util.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include <yaml-cpp/yaml.h>
+
+namespace gdnav::testing {
+
+namespace fs = std::filesystem;
+
+namespace {
+double now_s() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+pid_t spawn(const std::vector<std::string>& argv, int out_fd) {
+    std::vector<char*> a;
+    for (const auto& s : argv) a.push_back(const_cast<char*>(s.c_str()));
+    a.push_back(nullptr);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        setpgid(0, 0);
+        dup2(out_fd, 1);
+        dup2(out_fd, 2);
+        execv(a[0], a.data());
+        _exit(127);
+    }
+    return pid;
+}
+int decode(int st) { return WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st); }
+}  // namespace
+
+Result run(const std::vector<std::string>& argv, double timeout_s) {
+    const fs::path log = temp_dir("log") / "out.txt";
+    const double t0 = now_s();
+    const pid_t pid = start(argv, log);
+    Result r;
+    r.exit_code = wait_for(pid, timeout_s);
+    if (r.exit_code == -1) {
+        kill(-pid, SIGKILL);
+        int st = 0;
+        waitpid(pid, &st, 0);
+    }
+    r.wall_s = now_s() - t0;
+    r.output = read_file(log);
+    return r;
+}
+
+pid_t start(const std::vector<std::string>& argv, const fs::path& log) {
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const pid_t pid = spawn(argv, fd);
+    close(fd);
+    return pid;
+}
+
+int wait_for(pid_t pid, double timeout_s) {
+    const double end = now_s() + timeout_s;
+    while (now_s() < end) {
+        int st = 0;
+        const pid_t r = waitpid(pid, &st, WNOHANG);
+        if (r == pid) return decode(st);
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return -1;
+}
+
+bool alive(pid_t pid) {
+    if (kill(pid, 0) != 0) return false;
+    // A zombie is not alive.
+    std::ifstream st("/proc/" + std::to_string(pid) + "/stat");
+    std::string s;
+    std::getline(st, s);
+    const auto p = s.rfind(')');
+    return !(p != std::string::npos && p + 2 < s.size() && s[p + 2] == 'Z');
+}
+
+std::string read_file(const fs::path& p) {
+    std::ifstream f(p);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+}
+
+std::map<std::string, pid_t> read_processes(const fs::path& out) {
+    std::map<std::string, pid_t> m;
+    if (!fs::exists(out / "processes.yaml")) return m;
+    const YAML::Node n = YAML::LoadFile((out / "processes.yaml").string());
+    for (const auto& kv : n) m[kv.first.as<std::string>()] = kv.second.as<pid_t>();
+    return m;
+}
+
+std::map<std::string, std::string> read_digests(const fs::path& out) {
+    std::map<std::string, std::string> m;
+    const fs::path f = out / "record" / "digest.yaml";
+    if (!fs::exists(f)) return m;
+    const YAML::Node n = YAML::LoadFile(f.string());
+    for (const auto& kv : n["topics"]) m[kv.first.as<std::string>()] = kv.second["digest"].as<std::string>();
+    return m;
+}
+
+fs::path temp_dir(const std::string& tag) {
+    static int counter = 0;
+    const fs::path p = fs::temp_directory_path() /
+                       ("gdnav-test-" + std::to_string(getpid()) + "-" + tag + "-" + std::to_string(counter++));
+    fs::remove_all(p);
+    fs::create_directories(p);
+    return p;
+}
+
+std::string testchain_exe() { return GDNAV_TESTCHAIN_EXE; }
+std::string chain_scenario() { return GDNAV_CHAIN_SCENARIO; }
+
+}  // namespace gdnav::testing

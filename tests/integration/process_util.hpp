@@ -1,0 +1,37 @@
+#pragma once
+// Helpers for integration tests that start real gdnav processes.
+#include <sys/types.h>
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace gdnav::testing {
+
+struct Result {
+    int exit_code{-1};   // exit status, or 128 + signal
+    std::string output;  // stdout + stderr
+    double wall_s{0.0};
+};
+
+// Runs argv (no shell) with a wall-clock limit; kills the process group on overrun.
+Result run(const std::vector<std::string>& argv, double timeout_s = 120.0);
+
+// Starts argv in the background with output to `log`; returns its pid.
+pid_t start(const std::vector<std::string>& argv, const std::filesystem::path& log);
+// Waits for pid; returns exit code (128 + signal) or -1 on timeout.
+int wait_for(pid_t pid, double timeout_s);
+
+bool alive(pid_t pid);
+std::string read_file(const std::filesystem::path& p);
+std::map<std::string, pid_t> read_processes(const std::filesystem::path& out_dir);
+// topic -> digest of <out>/record/digest.yaml (empty when missing).
+std::map<std::string, std::string> read_digests(const std::filesystem::path& out_dir);
+// A fresh temporary directory for one test.
+std::filesystem::path temp_dir(const std::string& tag);
+// Path of gdnav-testchain and of the chain scenario.
+std::string testchain_exe();
+std::string chain_scenario();
+
+}  // namespace gdnav::testing
