@@ -1,11 +1,21 @@
 #include "register_components.hpp"
 
+#include "control_component.hpp"
+#include "flight_physics_component.hpp"
+#include "guidance_component.hpp"
 #include "recorder.hpp"
+#include "sensor_components.hpp"
+#include "truth_as_estimate.hpp"
 
 namespace gdnav::app {
 
 void register_all_components(runtime::ComponentRegistry& reg) {
     recorder::register_recorder(reg);
+    physics::register_flight_physics(reg);
+    sensors::register_sensor_components(reg);
+    guidance::register_guidance_component(reg);
+    control::register_control_component(reg);
+    diagnostics::register_diagnostics(reg);
 }
 
 }  // namespace gdnav::app

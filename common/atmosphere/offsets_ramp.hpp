@@ -1,0 +1,73 @@
+#pragma once
+// Time history of the INSA offsets dT (temperature) and dp (pressure) at mean sea level ("offsets ramp").
+// Each offset is constant before its own t_ini, linear between t_ini and t_end, and constant after t_end; the two
+// offsets have independent ramp times. No spatial dependence.
+//
+// Stochastic definition (reference section 2.1), draws in this order, N ~ N(0, 1):
+//   1. t_ini_T = t_ini_mean + s_t N, redrawn until >= t_min          2. t_ini_p: same, independently
+//   3. t_end_T = t_ini_T + dt_mean + s_t N, redrawn until >= t_ini_T + s_t     4. t_end_p: same, from t_ini_p
+//   5. dT_ini = s_dT0 N   6. dp_ini = s_dp0 N   7. dT_end = dT_ini + s_dTjump N   8. dp_end = dp_ini + s_dpjump N
+// Scenario #1 ("offsets_id02"): t_ini_mean 400 s, dt_mean 1200 s, s_t 600 s, t_min 50 s, s_dT0 10 K,
+//   s_dTjump 3 K, s_dp0 1500 Pa, s_dpjump 300 Pa. Scenario #2 ("offsets_id03"): same with zero jumps (constant
+//   offsets; the ramp times and jump normals are still drawn so both scenarios share dT_ini, dp_ini for one stream).
+#include "random/stream.hpp"
+
+namespace gdnav::atm {
+
+struct OffsetsRampParams {
+    double dT_ini_K{0.0};
+    double dT_end_K{0.0};
+    double t_ini_dT_s{0.0};
+    double t_end_dT_s{0.0};
+    double dp_ini_Pa{0.0};
+    double dp_end_Pa{0.0};
+    double t_ini_dp_s{0.0};
+    double t_end_dp_s{0.0};
+};
+
+struct OffsetsRampSpec {
+    double t_ini_mean_s{400.0};
+    double dt_mean_s{1200.0};
+    double sigma_t_s{600.0};
+    double t_min_s{50.0};
+    double sigma_dT0_K{10.0};
+    double sigma_dT_jump_K{3.0};
+    double sigma_dp0_Pa{1500.0};
+    double sigma_dp_jump_Pa{300.0};
+    static OffsetsRampSpec scenario1() { return {}; }
+    static OffsetsRampSpec scenario2() {
+        OffsetsRampSpec s;
+        s.sigma_dT_jump_K = 0.0;
+        s.sigma_dp_jump_Pa = 0.0;
+        return s;
+    }
+};
+
+OffsetsRampParams draw_offsets_ramp(rnd::Stream& stream, const OffsetsRampSpec& spec);
+inline OffsetsRampParams draw_offsets_scenario1(rnd::Stream& s) {
+    return draw_offsets_ramp(s, OffsetsRampSpec::scenario1());
+}
+inline OffsetsRampParams draw_offsets_scenario2(rnd::Stream& s) {
+    return draw_offsets_ramp(s, OffsetsRampSpec::scenario2());
+}
+
+struct Offsets {
+    double dT_K{0.0};
+    double dp_Pa{0.0};
+};
+
+class OffsetsRamp {
+public:
+    OffsetsRamp() = default;
+    explicit OffsetsRamp(const OffsetsRampParams& p) : p_(p) {}
+    [[nodiscard]] Offsets at(double t_s) const;
+    [[nodiscard]] const OffsetsRampParams& params() const { return p_; }
+
+private:
+    OffsetsRampParams p_{};
+};
+
+// Piecewise-linear ramp: v0 before t0, v1 after t1, linear in between (t1 <= t0 means a step at t0).
+double ramp_value(double t, double t0, double t1, double v0, double v1);
+
+}  // namespace gdnav::atm

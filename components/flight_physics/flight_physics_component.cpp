@@ -1,0 +1,163 @@
+#include "flight_physics_component.hpp"
+
+#include <optional>
+
+#include "flight_physics/model/flight_physics.hpp"
+#include "guidance/model/mission_yaml.hpp"
+#include "runtime/messages.hpp"
+#include "runtime/run_config.hpp"
+
+namespace gdnav::physics {
+
+using config::Config;
+using config::Range;
+
+namespace {
+
+void put3(std::array<double, 3>& a, const Vec3& v) { a = {v.x(), v.y(), v.z()}; }
+
+WindRampParams parse_wind(const Config& c) {
+    WindRampParams w;
+    w.t_ini_s = c.get_double("t_ini_s", {-1e6, 1e7});
+    w.t_end_s = c.get_double("t_end_s", {w.t_ini_s, 1e7});
+    w.speed_ini_mps = c.get_double("speed_ini_mps", {0.0, 60.0});
+    w.bearing_ini_rad = c.get_angle_deg("bearing_ini_deg", {-360.0, 360.0});
+    w.speed_end_mps = c.get_double("speed_end_mps", {0.0, 60.0});
+    w.bearing_end_rad = c.get_angle_deg("bearing_end_deg", {-360.0, 360.0});
+    return w;
+}
+
+atm::OffsetsRampParams parse_offsets(const Config& c) {
+    atm::OffsetsRampParams o;
+    o.dT_ini_K = c.get_double("dT_ini_K", {-60.0, 60.0});
+    o.dT_end_K = c.get_double("dT_end_K", {-60.0, 60.0});
+    o.t_ini_dT_s = c.get_double("t_ini_dT_s", {-1e6, 1e7});
+    o.t_end_dT_s = c.get_double("t_end_dT_s", {o.t_ini_dT_s, 1e7});
+    o.dp_ini_Pa = c.get_double("dp_ini_Pa", {-10000.0, 10000.0});
+    o.dp_end_Pa = c.get_double("dp_end_Pa", {-10000.0, 10000.0});
+    o.t_ini_dp_s = c.get_double("t_ini_dp_s", {-1e6, 1e7});
+    o.t_end_dp_s = c.get_double("t_end_dp_s", {o.t_ini_dp_s, 1e7});
+    return o;
+}
+
+earth::EarthTruthParams parse_earth(const Config& c) {
+    earth::EarthTruthParams e;
+    e.dg_mps2 = c.get_double("dg_mps2", {-0.01, 0.01});
+    e.tilt_rad = c.get_angle_deg("tilt_deg", {-1.0, 1.0});
+    e.tilt_axis_bearing_rad = c.get_angle_deg("tilt_axis_bearing_deg", {-360.0, 360.0});
+    e.mag_dev_n_nT = c.get_vec3("mag_dev_n_nT", {-5000.0, 5000.0});
+    return e;
+}
+
+class FlightPhysicsComponent final : public runtime::Component {
+public:
+    using Component::Component;
+
+    void configure(const Config& cfg, const runtime::RunInfo& run, rnd::Stream& stream) override {
+        const auto dir = runtime::config_dir();
+        const AircraftModel aircraft = AircraftModel::load(dir / cfg.get_string("aircraft", "aircraft/mugin.yaml"));
+        EnvironmentParams env;
+        env.magnetic = earth::MagneticModel::load(dir / cfg.get_string("magnetic_model", "earth/magnetic_wisconsin.yaml"));
+        if (auto t = cfg.optional_child("turbulence")) {
+            env.turbulence = TurbulenceParams::from_config(*t);
+            t->finish();
+        }
+        const std::string draw = cfg.get_choice("draw", "none", {"none", "scenario1", "scenario2"});
+        rnd::Stream draws = stream.child("environment");
+        if (auto w = cfg.optional_child("wind"))
+            env.wind = parse_wind(*w);
+        else if (draw != "none")
+            env.wind = draw == "scenario1" ? draw_wind_scenario1(draws) : draw_wind_scenario2(draws);
+        if (auto o = cfg.optional_child("offsets"))
+            env.offsets = parse_offsets(*o);
+        else if (draw != "none")
+            env.offsets = draw == "scenario1" ? atm::draw_offsets_scenario1(draws) : atm::draw_offsets_scenario2(draws);
+        if (auto e = cfg.optional_child("earth_truth"))
+            env.earth = parse_earth(*e);
+        else if (draw != "none")
+            env.earth = earth::draw_earth_truth(draws);
+
+        const Config init = cfg.child("initial");
+        const double lat = init.get_angle_deg("lat_deg", {-80.0, 80.0});
+        const double lon = init.get_angle_deg("lon_deg", {-360.0, 360.0});
+        const double mass = init.get_double("mass_kg", Range::positive());
+        double tas = 0.0, Hp = 0.0, bearing = 0.0;
+        if (init.has("mission")) {
+            const auto m = guidance::load_mission(dir / init.get_string("mission"));
+            const auto f = guidance::initial_flight(m);
+            if (!f) init.fail("mission", "the mission's first operation does not hold airspeed, Hp and bearing");
+            tas = f->airspeed_mps;
+            Hp = f->pressure_altitude_m;
+            bearing = f->bearing_rad;
+        } else {
+            tas = init.get_double("tas_mps", {15.0, 45.0});
+            Hp = init.get_double("Hp_m", {0.0, 8000.0});
+            bearing = init.get_angle_deg("bearing_deg", {-360.0, 360.0});
+        }
+        try {
+            fp_.emplace(aircraft, env, stream.child("turbulence"));
+            fp_->initialize_trimmed(lat, lon, Hp, tas, bearing, mass, run.t0_s);
+        } catch (const std::exception& e) {
+            cfg.fail("initial", std::string("cannot start the flight: ") + e.what());
+        }
+        u_ = fp_->trim().controls;
+    }
+
+    void step(const runtime::StepContext& ctx) override {
+        if (ctx.k > 0) {
+            if (u_in_.available()) {
+                const auto& c = u_in_.get();
+                u_ = Controls{c.throttle(), c.elevator_rad(), c.aileron_rad(), c.rudder_rad()};
+            }
+            fp_->advance(u_, ctx.dt_s);
+        }
+        fill(fp_->truth());
+    }
+
+private:
+    void fill(const TruthSample& s) {
+        auto& t = out_.value();
+        t.lon_rad(s.lon_rad);
+        t.lat_rad(s.lat_rad);
+        t.h_m(s.h_m);
+        put3(t.v_n_mps(), s.v_n_mps);
+        t.q_nb({s.q_nb.w(), s.q_nb.x(), s.q_nb.y(), s.q_nb.z()});
+        t.euler_rad({s.euler.yaw_rad, s.euler.pitch_rad, s.euler.bank_rad});
+        put3(t.w_ib_b_rps(), s.w_ib_b_rps);
+        put3(t.w_nb_b_rps(), s.w_nb_b_rps);
+        put3(t.dw_ib_b_rps2(), s.dw_ib_b_rps2);
+        put3(t.f_ib_b_mps2(), s.f_ib_b_mps2);
+        t.tas_mps(s.tas_mps);
+        t.aoa_rad(s.aoa_rad);
+        t.aos_rad(s.aos_rad);
+        put3(t.wind_n_mps(), s.wind_n_mps);
+        put3(t.turb_b_mps(), s.turb_b_mps);
+        t.dT_K(s.dT_K);
+        t.dp_Pa(s.dp_Pa);
+        t.Hp_m(s.Hp_m);
+        t.H_m(s.H_m);
+        t.p_Pa(s.p_Pa);
+        t.T_K(s.T_K);
+        t.rho_kgpm3(s.rho_kgpm3);
+        put3(t.g_n_mps2(), s.g_n_mps2);
+        put3(t.g_model_n_mps2(), s.g_model_n_mps2);
+        put3(t.b_n_nT(), s.b_n_nT);
+        put3(t.b_model_n_nT(), s.b_model_n_nT);
+        t.mass_kg(s.mass_kg);
+        t.controls({s.controls.throttle, s.controls.elevator_rad, s.controls.aileron_rad, s.controls.rudder_rad});
+    }
+
+    runtime::Input<msg::ControlCommands> u_in_{*this, topics::kControls, runtime::Lag::Previous};
+    runtime::Output<msg::Truth> out_{*this, topics::kTruth};
+    std::optional<FlightPhysics> fp_;
+    Controls u_{};
+};
+
+}  // namespace
+
+void register_flight_physics(runtime::ComponentRegistry& reg) {
+    reg.add("flight_physics", "Mugin equations of motion, wind, turbulence, atmosphere: ControlCommands -> Truth",
+            [](const std::string& n) { return std::make_unique<FlightPhysicsComponent>(n); });
+}
+
+}  // namespace gdnav::physics

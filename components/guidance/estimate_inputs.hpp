@@ -1,0 +1,44 @@
+#pragma once
+// The navigation estimates guidance and control close on: three lockstep inputs (AirDataEstimate,
+// AttitudeEstimate, PositionEstimate of step k) and their conversion to the plain structs of the GNC models.
+#include "control/model/measurements.hpp"
+#include "guidance/model/trigger.hpp"
+#include "runtime/component.hpp"
+#include "runtime/messages.hpp"
+
+namespace gdnav::guidance {
+
+struct EstimateInputs {
+    explicit EstimateInputs(runtime::Component& owner)
+        : air(owner, topics::kAirData), att(owner, topics::kAttitude), pos(owner, topics::kPosition) {}
+
+    [[nodiscard]] bool available() const { return air.available() && att.available() && pos.available(); }
+    [[nodiscard]] math::Quat q_nb() const {
+        const auto& q = att.get().q_nb();
+        return {q[0], q[1], q[2], q[3]};
+    }
+    [[nodiscard]] math::Vec3 v_n() const {
+        const auto& v = pos.get().v_n_mps();
+        return {v[0], v[1], v[2]};
+    }
+    [[nodiscard]] NavState nav_state() const {
+        return make_nav_state(air.get().tas_mps(), air.get().Hp_m(), pos.get().h_m(), v_n(), q_nb());
+    }
+    [[nodiscard]] control::ControlEstimates control_estimates() const {
+        control::ControlEstimates e;
+        e.airspeed_mps = air.get().tas_mps();
+        e.aoa_rad = air.get().aoa_rad();
+        e.aos_rad = air.get().aos_rad();
+        e.q_nb = q_nb();
+        e.v_n_mps = v_n();
+        e.pressure_altitude_m = air.get().Hp_m();
+        e.altitude_m = pos.get().h_m();
+        return e;
+    }
+
+    runtime::Input<msg::AirDataEstimate> air;
+    runtime::Input<msg::AttitudeEstimate> att;
+    runtime::Input<msg::PositionEstimate> pos;
+};
+
+}  // namespace gdnav::guidance

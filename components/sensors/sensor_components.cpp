@@ -1,0 +1,174 @@
+#include "sensor_components.hpp"
+
+#include "runtime/messages.hpp"
+#include "runtime/run_config.hpp"
+#include "sensors/model/air_data.hpp"
+#include "sensors/model/gnss.hpp"
+#include "sensors/model/inertial.hpp"
+#include "sensors/model/magnetic.hpp"
+#include "sensors/model/suite.hpp"
+
+namespace gdnav::sensors {
+
+using runtime::Input;
+using runtime::Output;
+namespace topics = gdnav::topics;
+
+namespace {
+
+math::Vec3 vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+void put(std::array<double, 3>& a, const math::Vec3& v) { a = {v.x(), v.y(), v.z()}; }
+
+// Loads the suite named in the component section and applies the run's timing and the section's overrides.
+SensorSuiteParams load_suite(const config::Config& cfg, const runtime::RunInfo& run) {
+    const auto file = runtime::config_dir() / cfg.get_string("suite", "sensors/suite.yaml");
+    SensorSuiteParams s = load_sensor_suite(file);
+    s.inertial.dt_s = run.dt_s;
+    s.mag.dt_s = run.dt_s;
+    s.gnss.dt_s = run.dt_s;
+    s.gnss.t0_s = run.t0_s;
+    return s;
+}
+
+// Grade override: re-reads one group's grade file from the suite's folder.
+template <class Grade, class Parse>
+void override_grade(const config::Config& cfg, const char* key, const char* group, Grade& grade, std::string& name,
+                    Parse parse) {
+    if (!cfg.has(key)) return;
+    name = cfg.get_string(key);
+    const auto dir = (runtime::config_dir() / cfg.get_string("suite", "sensors/suite.yaml")).parent_path();
+    grade = parse(load_grade_file(dir, group, name));
+}
+
+class InertialComponent final : public runtime::Component {
+public:
+    using Component::Component;
+    void configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream& stream) override {
+        SensorSuiteParams s = load_suite(cfg, run);
+        override_grade(cfg, "gyr_grade", "gyroscopes", s.inertial.gyr, s.gyr_grade, parse_gyro_grade);
+        override_grade(cfg, "acc_grade", "accelerometers", s.inertial.acc, s.acc_grade, parse_acc_grade);
+        s.inertial.bias_drift_band = cfg.get_double("bias_drift_band", s.inertial.bias_drift_band, {1.0, 1e6});
+        model_.configure(s.inertial, stream);
+    }
+    void step(const runtime::StepContext& ctx) override {
+        const auto& t = truth_.get();
+        InertialTruth in{vec(t.f_ib_b_mps2()), vec(t.w_ib_b_rps()), vec(t.dw_ib_b_rps2()), t.mass_kg()};
+        const ImuMeasurement m = model_.measure(ctx.k, ctx.t_s, in);
+        put(out_.value().f_b_mps2(), m.f_b_mps2);
+        put(out_.value().w_b_rps(), m.w_b_rps);
+    }
+
+private:
+    Input<msg::Truth> truth_{*this, topics::kTruth};
+    Output<msg::ImuSample> out_{*this, topics::kImu};
+    InertialSensors model_;
+};
+
+class MagneticComponent final : public runtime::Component {
+public:
+    using Component::Component;
+    void configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream& stream) override {
+        SensorSuiteParams s = load_suite(cfg, run);
+        override_grade(cfg, "grade", "magnetometers", s.mag.grade, s.mag_grade, parse_mag_grade);
+        model_.configure(s.mag, stream);
+    }
+    void step(const runtime::StepContext& ctx) override {
+        const auto& t = truth_.get();
+        const auto& q = t.q_nb();
+        MagTruth in{math::Quat(q[0], q[1], q[2], q[3]), vec(t.b_n_nT())};
+        put(out_.value().b_b_nT(), model_.measure(ctx.k, ctx.t_s, in).b_b_nT);
+    }
+
+private:
+    Input<msg::Truth> truth_{*this, topics::kTruth};
+    Output<msg::MagSample> out_{*this, topics::kMag};
+    Magnetometers model_;
+};
+
+class AirComponent final : public runtime::Component {
+public:
+    using Component::Component;
+    void configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream& stream) override {
+        SensorSuiteParams s = load_suite(cfg, run);
+        override_grade(cfg, "grade", "air_data", s.air.grade, s.air_grade, parse_air_grade);
+        model_.configure(s.air, stream);
+    }
+    void step(const runtime::StepContext& ctx) override {
+        const auto& t = truth_.get();
+        const AirMeasurement m = model_.measure(ctx.k, ctx.t_s, {t.tas_mps(), t.aoa_rad(), t.aos_rad()});
+        out_.value().tas_mps(m.tas_mps);
+        out_.value().aoa_rad(m.aoa_rad);
+        out_.value().aos_rad(m.aos_rad);
+    }
+
+private:
+    Input<msg::Truth> truth_{*this, topics::kTruth};
+    Output<msg::AirSample> out_{*this, topics::kAir};
+    AirDataSensors model_;
+};
+
+class AtmosphericComponent final : public runtime::Component {
+public:
+    using Component::Component;
+    void configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream& stream) override {
+        SensorSuiteParams s = load_suite(cfg, run);
+        override_grade(cfg, "grade", "atmospheric", s.atm.grade, s.atm_grade, parse_atm_grade);
+        model_.configure(s.atm, stream);
+    }
+    void step(const runtime::StepContext& ctx) override {
+        const auto& t = truth_.get();
+        const AtmMeasurement m = model_.measure(ctx.k, ctx.t_s, {t.p_Pa(), t.T_K()});
+        out_.value().p_Pa(m.p_Pa);
+        out_.value().T_K(m.T_K);
+    }
+
+private:
+    Input<msg::Truth> truth_{*this, topics::kTruth};
+    Output<msg::AtmSample> out_{*this, topics::kAtm};
+    AtmosphericSensors model_;
+};
+
+class GnssComponent final : public runtime::Component {
+public:
+    using Component::Component;
+    void configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream& stream) override {
+        SensorSuiteParams s = load_suite(cfg, run);
+        override_grade(cfg, "grade", "gnss", s.gnss.grade, s.gnss_grade, parse_gnss_grade);
+        if (cfg.has("loss_time_s")) s.gnss.loss_time_s = cfg.get_double("loss_time_s", {-1e6, 1e7});
+        if (cfg.get_bool("never_lost", false)) s.gnss.loss_time_s.reset();
+        model_.configure(s.gnss, stream);
+    }
+    void step(const runtime::StepContext& ctx) override {
+        const auto& t = truth_.get();
+        const GnssMeasurement m =
+            model_.measure(ctx.k, ctx.t_s, {t.lon_rad(), t.lat_rad(), t.h_m(), vec(t.v_n_mps())});
+        auto& o = out_.value();
+        o.fix_valid(m.fix_valid);
+        o.lon_rad(m.lon_rad);
+        o.lat_rad(m.lat_rad);
+        o.h_m(m.h_m);
+        put(o.v_n_mps(), m.v_n_mps);
+    }
+
+private:
+    Input<msg::Truth> truth_{*this, topics::kTruth};
+    Output<msg::GnssSample> out_{*this, topics::kGnss};
+    GnssReceiver model_;
+};
+
+template <class C>
+runtime::ComponentRegistry::Factory factory() {
+    return [](const std::string& n) { return std::make_unique<C>(n); };
+}
+
+}  // namespace
+
+void register_sensor_components(runtime::ComponentRegistry& reg) {
+    reg.add("sensors_inertial", "gyroscopes + accelerometers: Truth -> ImuSample", factory<InertialComponent>());
+    reg.add("sensors_magnetic", "magnetometers: Truth -> MagSample", factory<MagneticComponent>());
+    reg.add("sensors_air", "Pitot TAS + AOA/AOS vanes: Truth -> AirSample", factory<AirComponent>());
+    reg.add("sensors_atmospheric", "barometer + thermometer: Truth -> AtmSample", factory<AtmosphericComponent>());
+    reg.add("sensors_gnss", "GNSS receiver, 1 Hz fixes until t_GNSS: Truth -> GnssSample", factory<GnssComponent>());
+}
+
+}  // namespace gdnav::sensors
