@@ -3,6 +3,9 @@
 #include "control_component.hpp"
 #include "flight_physics_component.hpp"
 #include "guidance_component.hpp"
+#include "nav_recorder.hpp"
+#include "paper_scenarios.hpp"
+#include "nav_components.hpp"
 #include "recorder.hpp"
 #include "sensor_components.hpp"
 #include "truth_as_estimate.hpp"
@@ -13,9 +16,12 @@ void register_all_components(runtime::ComponentRegistry& reg) {
     recorder::register_recorder(reg);
     physics::register_flight_physics(reg);
     sensors::register_sensor_components(reg);
+    nav::register_nav_components(reg);
     guidance::register_guidance_component(reg);
     control::register_control_component(reg);
     diagnostics::register_diagnostics(reg);
+    nav_recorder::register_nav_recorder(reg);
+    scenario::register_paper_scenarios();
 }
 
 }  // namespace gdnav::app

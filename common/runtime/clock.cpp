@@ -205,6 +205,14 @@ struct Clock::Impl {
         return true;
     }
 
+    // Lowest number of steps that every live barrier member has completed.
+    std::uint64_t min_done() const {
+        std::uint64_t m = UINT64_MAX;
+        for (const Member* x : table)
+            if (!x->free && !x->dead) m = std::min(m, x->done_count);
+        return m == UINT64_MAX ? rc.info.steps : m;
+    }
+
     std::string waiting_for() const {
         std::string s;
         for (const Member* m : table)
@@ -334,8 +342,11 @@ struct Clock::Impl {
                 if (aborted) return finish(kExitAborted, now);
                 if (!tick_pending && all_done()) {
                     last_progress_s = now;
-                    if (current + 1 >= rc.info.steps) return finish(kExitOk, now);
-                    ++current;
+                    current = min_done();
+                    if (current >= rc.info.steps) {
+                        current = rc.info.steps;
+                        return finish(kExitOk, now);
+                    }
                     if (rc.realtime > 0.0) {
                         tick_pending = true;
                     } else {

@@ -336,7 +336,7 @@ struct DdsHost::Impl {
                 }
                 l.comp->pending_status().clear();
                 ++l.next_step;
-                if (!opt.free_running) {
+                if (!opt.free_running && ((k + 1) % rc.done_every() == 0 || k + 1 == rc.info.steps)) {
                     done.run_id(rc.info.run_index);
                     done.step(k);
                     done.member_index(l.index);

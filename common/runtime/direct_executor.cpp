@@ -1,5 +1,6 @@
 #include "runtime/direct_executor.hpp"
 
+#include <chrono>
 #include <map>
 #include <stdexcept>
 
@@ -53,7 +54,13 @@ void DirectExecutor::step(std::uint64_t k) {
             else
                 b.input->bind(b.same);
         }
-        c->step(ctx);
+        if (profile_ns_.empty()) {
+            c->step(ctx);
+        } else {
+            const auto t0 = std::chrono::steady_clock::now();
+            c->step(ctx);
+            profile_ns_[i] += std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
+        }
         for (OutputBase* o : c->outputs()) o->ops().set_stamp(o->data(), run_.run_index, k, ctx.t_s);
         for (auto& msg : c->pending_status()) spdlog::info("[{}] step {} t={:.2f} s: {}", c->name(), k, ctx.t_s, msg);
         c->pending_status().clear();
@@ -72,6 +79,12 @@ std::uint64_t DirectExecutor::run(const std::function<void(std::uint64_t)>& prog
     }
     finish(true);
     return k;
+}
+
+std::vector<double> DirectExecutor::mean_step_us(std::uint64_t steps) const {
+    std::vector<double> v;
+    for (auto ns : profile_ns_) v.push_back(static_cast<double>(ns) * 1e-3 / static_cast<double>(std::max<std::uint64_t>(steps, 1)));
+    return v;
 }
 
 void DirectExecutor::finish(bool completed) {

@@ -19,6 +19,10 @@ public:
     void step(std::uint64_t k);
     void finish(bool completed);
     [[nodiscard]] const std::vector<Component*>& order() const { return order_; }
+    // Measures the wall time of every component's step (for `gdnav bench`; off by default).
+    void enable_profiling() { profile_ns_.assign(order_.size(), 0); }
+    // Mean wall time per step of each component in order(), in microseconds (empty unless profiling).
+    [[nodiscard]] std::vector<double> mean_step_us(std::uint64_t steps) const;
 
 private:
     struct PrevBuffer {
@@ -37,6 +41,7 @@ private:
     std::vector<std::unique_ptr<PrevBuffer>> prev_;
     RunInfo run_;
     bool finished_{false};
+    std::vector<std::int64_t> profile_ns_;
 };
 
 }  // namespace gdnav::runtime

@@ -7,6 +7,8 @@
 #include <set>
 #include <sstream>
 
+#include "runtime/scenario_generator.hpp"
+
 #ifndef GDNAV_SOURCE_CONFIG_DIR
 #define GDNAV_SOURCE_CONFIG_DIR "config"
 #endif
@@ -62,6 +64,22 @@ RunConfig RunConfig::parse(const std::string& text, const std::string& origin, c
         root["run"].remove("duration_s");
         root["run"]["steps"] = *o.steps;
     }
+    if (root["generator"]) {
+        const Config top0 = Config::wrap(root, origin);
+        const Config gen = top0.child("generator");
+        const std::string name = gen.get_string("name");
+        const ScenarioGenerator* g = find_scenario_generator(name);
+        if (!g) {
+            std::string known;
+            for (const auto& n : scenario_generator_names()) known += (known.empty() ? "" : ", ") + n;
+            gen.fail("name", "unknown scenario generator '" + name + "' (known: " + known + ")");
+        }
+        const Config run0 = top0.child("run");
+        const std::uint64_t seed = run0.get_uint64("seed");
+        const std::uint64_t index = run0.has("run_index") ? run0.get_uint64("run_index") : 0;
+        root = (*g)(root, seed, index, origin);
+        root.remove("generator");
+    }
 
     RunConfig rc;
     rc.origin = origin;
@@ -83,7 +101,7 @@ RunConfig RunConfig::parse(const std::string& text, const std::string& origin, c
     rc.member_timeout_s = run.get_double("member_timeout_s", 1.5, Range{0.2, 60.0});
     rc.startup_timeout_s = run.get_double("startup_timeout_s", 30.0, Range{1.0, 3600.0});
     rc.stall_timeout_s = run.get_double("stall_timeout_s", 60.0, Range{1.0, 86400.0});
-    rc.window_steps = static_cast<std::uint64_t>(run.get_int("window_steps", 4, 0, 8));
+    rc.window_steps = static_cast<std::uint64_t>(run.get_int("window_steps", 16, 0, 32));
     if (rc.realtime > 0.0) rc.window_steps = 0;
     rc.domain_given = run.has("domain_id");
     rc.domain_id = static_cast<int>(run.get_int("domain_id", 0, 0, 232));

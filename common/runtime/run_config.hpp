@@ -12,7 +12,7 @@
 //     member_timeout_s: 1.5    # wall-clock silence after which a member (or the clock) is declared dead
 //     startup_timeout_s: 30    # wall-clock wait for all members before step 0
 //     stall_timeout_s: 60      # wall-clock wait without progress while everybody is alive
-//     window_steps: 4          # how far a member may run ahead of the last Tick (0 = strict lockstep;
+//     window_steps: 16         # how far a member may run ahead of the last Tick (0 = strict lockstep;
 //                              # forced to 0 when realtime > 0); see docs/runtime.md
 //     essential: [plant]       # members whose loss aborts the run
 //     domain_id: 0             # DDS domain (the launcher picks a free one when absent)
@@ -69,7 +69,9 @@ public:
     double member_timeout_s{1.5};
     double startup_timeout_s{30.0};
     double stall_timeout_s{60.0};
-    std::uint64_t window_steps{4};
+    std::uint64_t window_steps{16};
+    // StepDone is reported every done_every steps (window/2, at least 1).
+    [[nodiscard]] std::uint64_t done_every() const { return window_steps / 2 > 0 ? window_steps / 2 : 1; }
     int domain_id{0};
     bool domain_given{false};
     std::vector<std::string> essential;

@@ -56,6 +56,8 @@ public:
         const ImuMeasurement m = model_.measure(ctx.k, ctx.t_s, in);
         put(out_.value().f_b_mps2(), m.f_b_mps2);
         put(out_.value().w_b_rps(), m.w_b_rps);
+        put(out_.value().e_gyr_rps(), m.e_gyr_rps);
+        put(out_.value().e_acc_mps2(), m.e_acc_mps2);
     }
 
 private:
@@ -76,7 +78,9 @@ public:
         const auto& t = truth_.get();
         const auto& q = t.q_nb();
         MagTruth in{math::Quat(q[0], q[1], q[2], q[3]), vec(t.b_n_nT())};
-        put(out_.value().b_b_nT(), model_.measure(ctx.k, ctx.t_s, in).b_b_nT);
+        const MagMeasurement m = model_.measure(ctx.k, ctx.t_s, in);
+        put(out_.value().b_b_nT(), m.b_b_nT);
+        put(out_.value().e_mag_nT(), m.e_mag_nT);
     }
 
 private:

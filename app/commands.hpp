@@ -1,0 +1,17 @@
+#pragma once
+// Every gdnav subcommand. To add one: write add_<name>_command in its own file and list it in cli.cpp's table.
+#include "command.hpp"
+
+namespace gdnav::app {
+
+CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
+CLI::App* add_component_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
+CLI::App* add_clock_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
+CLI::App* add_validate_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
+CLI::App* add_list_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
+CLI::App* add_bench_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
+CLI::App* add_scenario_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
+CLI::App* add_montecarlo_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
+CLI::App* add_report_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
+
+}  // namespace gdnav::app

@@ -1,0 +1,20 @@
+#pragma once
+// gdnav report / the end of gdnav montecarlo: aggregate a batch directory's per-run metrics into the paper's tables
+// (report/tables.md, aggregate.yaml, runs.csv) and draw the figures with tools/report/report.py (Debian's
+// /usr/bin/python3 with matplotlib, h5py and numpy; override with $GDNAV_PYTHON and $GDNAV_REPORT_SCRIPT).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace gdnav::app {
+
+struct ReportOptions {
+    bool figures{true};
+    std::filesystem::path out;  // default: <first dir>/report
+};
+
+// Returns 0 when the tables (and figures, if asked) were written; the count of complete runs per batch in `runs`.
+int write_batch_report(const std::vector<std::filesystem::path>& batch_dirs, const ReportOptions& o,
+                       std::vector<std::size_t>* runs = nullptr);
+
+}  // namespace gdnav::app

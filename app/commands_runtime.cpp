@@ -1,0 +1,152 @@
+// Subcommands of the runtime: run, component, clock, validate, list, bench.
+#include "commands.hpp"
+
+#include <memory>
+
+#include <spdlog/spdlog.h>
+
+#include "bench.hpp"
+#include "runtime/clock.hpp"
+#include "runtime/dds_host.hpp"
+#include "runtime/graph.hpp"
+#include "runtime/launcher.hpp"
+#include "runtime/lockstep.hpp"
+#include "runtime/process_signals.hpp"
+#include "runtime/topic_types.hpp"
+
+namespace gdnav::app {
+
+using namespace gdnav::runtime;
+
+CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
+    struct Args {
+        std::string scenario{"default"};
+        std::uint64_t seed{1};
+        std::uint64_t run_index{0};
+        std::string layout{"distributed"};
+        std::string out;
+        double realtime{0.0};
+        std::uint64_t steps{0};
+        int domain{-1};
+    };
+    auto a = std::make_shared<Args>();
+    auto* sub = app.add_subcommand("run", "run one simulation in a layout, supervising all its processes");
+    sub->add_option("--scenario", a->scenario, "scenario name (config/scenarios/<name>.yaml) or YAML file");
+    sub->add_option("--seed", a->seed, "master seed");
+    sub->add_option("--run", a->run_index, "run index inside a batch");
+    sub->add_option("--layout", a->layout, "direct | composed | distributed")
+        ->check(CLI::IsMember({"direct", "composed", "distributed"}));
+    sub->add_option("--out", a->out, "output directory");
+    sub->add_option("--realtime", a->realtime, "pace to wall time x FACTOR (0 = as fast as possible)")
+        ->check(CLI::Range(0.0, 1e6));
+    sub->add_option("--steps", a->steps, "override the number of steps");
+    sub->add_option("--domain", a->domain, "DDS domain id (default: derived from the process id)")
+        ->check(CLI::Range(0, 232));
+    run = [a, sub, &ctx]() {
+        setup_logging("gdnav", ctx.log_level);
+        RunOverrides o;
+        if (sub->count("--seed")) o.seed = a->seed;
+        if (sub->count("--run")) o.run_index = a->run_index;
+        if (!a->out.empty()) o.out_dir = a->out;
+        if (sub->count("--realtime")) o.realtime = a->realtime;
+        if (a->steps > 0) o.steps = a->steps;
+        if (a->domain >= 0) o.domain_id = a->domain;
+        RunConfig rc = RunConfig::load(resolve_scenario(a->scenario), o);
+        LaunchOptions lo;
+        lo.layout = a->layout;
+        lo.log_level = ctx.log_level;
+        return launch_run(std::move(rc), ctx.registry, lo);
+    };
+    return sub;
+}
+
+CLI::App* add_component_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
+    struct Args {
+        std::string names, config;
+        bool free_running{false};
+    };
+    auto a = std::make_shared<Args>();
+    auto* sub = app.add_subcommand("component", "run one or more components (comma-separated) in this process");
+    sub->add_option("names", a->names, "component name(s) from the run config")->required();
+    sub->add_option("--config", a->config, "run config (YAML)")->required();
+    sub->add_flag("--free-running", a->free_running, "not in the lockstep barrier; inputs use the latest samples");
+    run = [a, &ctx]() {
+        setup_logging(a->names, ctx.log_level);
+        install_stop_signal_handlers();
+        const RunConfig rc = RunConfig::load(a->config);
+        auto members = rc.build(ctx.registry, split_topics(a->names));
+        HostOptions ho;
+        ho.free_running = a->free_running;
+        DdsHost host(rc, std::move(members), ho);
+        return host.run();
+    };
+    return sub;
+}
+
+CLI::App* add_clock_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
+    auto config = std::make_shared<std::string>();
+    auto* sub = app.add_subcommand("clock", "run the lockstep clock of a run");
+    sub->add_option("--config", *config, "run config (YAML)")->required();
+    run = [config, &ctx]() {
+        setup_logging(kClockName, ctx.log_level);
+        install_stop_signal_handlers();
+        const RunConfig rc = RunConfig::load(*config);
+        Clock clock(rc, ClockOptions{});
+        return clock.run();
+    };
+    return sub;
+}
+
+CLI::App* add_validate_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
+    auto scenario = std::make_shared<std::string>();
+    auto* sub = app.add_subcommand("validate", "validate a scenario / run config without running it");
+    sub->add_option("--scenario", *scenario, "scenario name or YAML file")->required();
+    run = [scenario, &ctx]() {
+        setup_logging("gdnav", ctx.log_level);
+        const RunConfig rc = RunConfig::load(resolve_scenario(*scenario));
+        auto comps = rc.build(ctx.registry);
+        std::vector<Component*> raw;
+        for (auto& c : comps) raw.push_back(c.get());
+        const Graph g = build_graph(raw);
+        std::string order;
+        for (auto* c : g.order) order += (order.empty() ? "" : " -> ") + c->name();
+        spdlog::info("{}: valid; {} components, {} steps; step order: {}", rc.origin, comps.size(), rc.info.steps,
+                     order);
+        return 0;
+    };
+    return sub;
+}
+
+CLI::App* add_list_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
+    auto* sub = app.add_subcommand("list", "list component types, topics and scenarios");
+    run = [&ctx]() {
+        std::printf("component types:\n");
+        for (const auto& t : ctx.registry.types()) std::printf("  %-22s %s\n", t.c_str(), ctx.registry.description(t).c_str());
+        std::printf("topics:\n");
+        for (const auto& t : known_topics()) std::printf("  %s\n", t.c_str());
+        std::printf("scenarios (%s):\n", (config_dir() / "scenarios").c_str());
+        std::error_code ec;
+        std::vector<std::string> names;
+        for (const auto& e : std::filesystem::directory_iterator(config_dir() / "scenarios", ec))
+            if (e.path().extension() == ".yaml") names.push_back(e.path().stem().string());
+        std::sort(names.begin(), names.end());
+        for (const auto& n : names) std::printf("  %s\n", n.c_str());
+        return 0;
+    };
+    return sub;
+}
+
+CLI::App* add_bench_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
+    auto a = std::make_shared<BenchArgs>();
+    auto* sub = app.add_subcommand("bench", "measure steps/s and real-time factor per layout, and model costs");
+    sub->add_option("--scenario", a->scenario, "scenario name or YAML file");
+    sub->add_option("--steps", a->steps, "steps per measurement");
+    sub->add_option("--layouts", a->layouts, "layouts to measure")->delimiter(',');
+    run = [a, &ctx]() {
+        setup_logging("gdnav", ctx.log_level);
+        return run_bench(*a, ctx.registry);
+    };
+    return sub;
+}
+
+}  // namespace gdnav::app

@@ -1,0 +1,164 @@
+#include "attitude_filter.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "filters/quat_jacobians.hpp"
+#include "math/rotation.hpp"
+#include "nav_earth.hpp"
+
+namespace gdnav::nav {
+
+using config::Range;
+using filters::Quat4;
+
+att::SpecificForceModel parse_specific_force_model(const config::Config& variant) {
+    const std::string m =
+        variant.get_choice("specific_force", {"baseline", "zero_fb_derivatives", "zero_fn_derivatives"});
+    if (m == "zero_fb_derivatives") return att::SpecificForceModel::kZeroBodyDerivatives;
+    if (m == "zero_fn_derivatives") return att::SpecificForceModel::kZeroNedDerivatives;
+    return att::SpecificForceModel::kBaseline;
+}
+
+void AttitudeFilter::configure(const config::Config& tuning, const config::Config& variant, rnd::Stream stream) {
+    Tuning t;
+    t.dt_s = tuning.get_double("dt_s", Range{1e-4, 1.0});
+    t.transition_order = static_cast<int>(tuning.get_int("transition_order", 1, 4));
+    const config::Config q = tuning.child("q_per_step");
+    t.q_diag.segment<4>(att::kQ).setConstant(q.get_double("q", Range::nonneg()));
+    t.q_diag.segment<3>(att::kW).setConstant(q.get_double("w_nb_rad2ps2", Range::nonneg()));
+    t.q_diag.segment<3>(att::kEgyr).setConstant(q.get_double("gyr_bias_rad2ps2", Range::nonneg()));
+    t.q_diag.segment<3>(att::kEmag).setConstant(q.get_double("mag_bias_nT2", Range::nonneg()));
+    t.q_diag.segment<3>(att::kBdev).setConstant(q.get_double("b_dev_nT2", Range::nonneg()));
+    const config::Config r = tuning.child("r");
+    t.r_diag.segment<3>(att::kYgyr).setConstant(r.get_double("gyr_rad2ps2", Range::positive()));
+    t.r_diag.segment<3>(att::kYacc) = r.get_vec3("acc_m2ps4", Range::positive());
+    t.r_diag.segment<3>(att::kYmag).setConstant(r.get_double("mag_nT2", Range::positive()));
+    t.gyr_noise_var = tuning.get_double("gyr_noise_var_rad2ps2", Range::nonneg());
+    const config::Config init = tuning.child("init");
+    t.init_mode = init.get_choice("mode", {"measurements", "reference"}) == "reference" ? InitMode::kReference
+                                                                                         : InitMode::kMeasurements;
+    const config::Config im = init.child("measurements");
+    t.init_sigmas.att_rad = im.get_angle_deg("att_sigma_deg", Range{0.0, 30.0});
+    t.init_sigmas.gyr_bias_rps.setConstant(im.get_angle_deg("gyr_bias_sigma_dps", Range::nonneg()));
+    t.init_sigmas.mag_bias_nT = im.get_vec3("mag_bias_sigma_nT", Range::nonneg());
+    t.init_sigmas.b_dev_nT = im.get_vec3("b_dev_sigma_nT", Range::nonneg());
+    const config::Config ir = init.child("reference");
+    t.init_errors.att_sigma_rad = ir.get_angle_deg("att_error_sigma_deg", Range{0.0, 30.0});
+    t.init_errors.q_p0 = ir.get_double("q_p0", Range::positive());
+    t.init_errors.gyr_rel = ir.get_double("gyr_rel_error", Range{0.0, 1.0});
+    t.init_errors.mag_rel = ir.get_double("mag_rel_error", Range{0.0, 1.0});
+    t.init_errors.b_dev_rel = ir.get_double("b_dev_rel_error", Range{0.0, 1.0});
+    t.init_errors.normalise_error_axis = ir.get_bool("normalise_error_axis");
+    t.model = parse_specific_force_model(variant);
+    tuning.finish();
+    variant.finish();
+    configure(t, stream);
+}
+
+void AttitudeFilter::configure(const Tuning& tuning, rnd::Stream stream) {
+    tun_ = tuning;
+    stream_ = stream;
+    initialized_ = false;
+}
+
+AttitudeEstimate AttitudeFilter::initialize(std::uint64_t k, double t_s, const ImuSample& imu, const MagSample& mag,
+                                            const AirDataEstimate& air, const GnssSample& gnss,
+                                            const StartTruth* truth) {
+    AttitudeInit in;
+    if (tun_.init_mode == InitMode::kReference) {
+        if (truth == nullptr) throw std::invalid_argument("attitude init.mode reference needs the start truth");
+        rnd::Stream s = stream_.child("init");
+        const ReferenceInitErrors& e = tun_.init_errors;
+        in.q_nb = (draw_attitude_error(e.att_sigma_rad, e.normalise_error_axis, s) * truth->q_nb).normalized();
+        in.gyr_bias_rps = perturb_relative(truth->gyr_err_b_rps, e.gyr_rel, s);
+        in.mag_bias_nT = perturb_relative(truth->mag_err_b_nT, e.mag_rel, s);
+        in.b_dev_n_nT = perturb_relative(truth->b_dev_n_nT, e.b_dev_rel, s);
+        in.q_p0 = e.q_p0;
+        in.gyr_bias_sigma_rps = e.gyr_rel * truth->gyr_err_b_rps.cwiseAbs();
+        in.mag_bias_sigma_nT = e.mag_rel * truth->mag_err_b_nT.cwiseAbs();
+        in.b_dev_sigma_nT = e.b_dev_rel * truth->b_dev_n_nT.cwiseAbs();
+        in.w_nb_b_rps = imu.w_b_rps - in.gyr_bias_rps;  // Earth and transport rates ignored, as the reference
+    } else {
+        if (!gnss.fix_valid) throw std::invalid_argument("attitude init.mode measurements needs a valid GNSS fix");
+        const MeasurementInitSigmas& s = tun_.init_sigmas;
+        const Vec3 vtas_b = math::vtas_body(air.tas_mps, air.aoa_rad, air.aos_rad);
+        const Vec3 f_corr = imu.f_b_mps2 - imu.w_b_rps.cross(vtas_b);
+        in.q_nb = coarse_attitude(f_corr, mag.b_b_nT, earth::magnetic_model_n(gnss.lon_rad, gnss.lat_rad));
+        in.w_nb_b_rps = imu.w_b_rps - in.q_nb.conjugate() * earth::w_ie_n(gnss.lat_rad);
+        in.att_sigma_rad = s.att_rad;
+        in.gyr_bias_sigma_rps = s.gyr_bias_rps;
+        in.mag_bias_sigma_nT = s.mag_bias_nT;
+        in.b_dev_sigma_nT = s.b_dev_nT;
+    }
+    in.w_nb_sigma_rps = (in.gyr_bias_sigma_rps.array().square() + tun_.gyr_noise_var).sqrt();
+    return initialize(k, t_s, in);
+}
+
+AttitudeEstimate AttitudeFilter::initialize(std::uint64_t k, double t_s, const AttitudeInit& in) {
+    x_.setZero();
+    const Quat qn = in.q_nb.normalized();
+    x_.segment<4>(att::kQ) = math::to_wxyz(qn);
+    x_.segment<3>(att::kW) = in.w_nb_b_rps;
+    x_.segment<3>(att::kEgyr) = in.gyr_bias_rps;
+    x_.segment<3>(att::kEmag) = in.mag_bias_nT;
+    x_.segment<3>(att::kBdev) = in.b_dev_n_nT;
+    p_.setZero();
+    if (in.att_sigma_rad > 0.0) {
+        const filters::Mat43 xi = filters::xi(x_.segment<4>(att::kQ));
+        p_.block<4, 4>(att::kQ, att::kQ) = 0.25 * in.att_sigma_rad * in.att_sigma_rad * xi * xi.transpose();
+    } else {
+        p_.block<4, 4>(att::kQ, att::kQ) = in.q_p0 * Eigen::Matrix4d::Identity();
+    }
+    p_.diagonal().segment<3>(att::kW) = in.w_nb_sigma_rps.array().square();
+    p_.diagonal().segment<3>(att::kEgyr) = in.gyr_bias_sigma_rps.array().square();
+    p_.diagonal().segment<3>(att::kEmag) = in.mag_bias_sigma_nT.array().square();
+    p_.diagonal().segment<3>(att::kBdev) = in.b_dev_sigma_nT.array().square();
+    initialized_ = true;
+    return output(k, t_s);
+}
+
+void AttitudeFilter::normalise_quaternion() { x_.segment<4>(att::kQ).normalize(); }
+
+AttitudeEstimate AttitudeFilter::step(std::uint64_t k, double t_s, const ImuSample& imu, const MagSample& mag,
+                                      const PositionEstimate& pos_prev) {
+    if (!initialized_) throw std::logic_error("AttitudeFilter::step before initialize");
+    // Propagate.
+    // A is zero outside its leading 7x7 block (q rows, q and w_nb columns): Phi = diag(Phi_7, I).
+    const filters::SqMat<att::kJ> phi = filters::transition_matrix<att::kJ>(
+        att::state_jacobian(x_).topLeftCorner<att::kJ, att::kJ>(), tun_.dt_s, tun_.transition_order);
+    x_ += tun_.dt_s * att::derivative(x_);
+    normalise_quaternion();
+    filters::propagate_covariance_leading_diag<att::kN, att::kJ>(p_, phi, tun_.q_diag);
+    // Update with the p_n vector of the previous position estimate.
+    const att::PnVector pn = att::make_pn(pos_prev);
+    att::MeasVec y;
+    y << imu.w_b_rps, imu.f_b_mps2, mag.b_b_nT;
+    const att::MeasVec r = y - att::observe(x_, pn, tun_.model);
+    const auto info = filters::joseph_update_diag<att::kN, att::kM>(x_, p_, r, att::observation_jacobian(x_, pn, tun_.model),
+                                                               tun_.r_diag);
+    last_nis_ = info.nis;
+    normalise_quaternion();
+    return output(k, t_s);
+}
+
+Eigen::Matrix3d AttitudeFilter::attitude_covariance_n() const {
+    const filters::Mat34 g = filters::att_error_jacobian(x_.segment<4>(att::kQ));
+    return g * p_.block<4, 4>(att::kQ, att::kQ) * g.transpose();
+}
+
+AttitudeEstimate AttitudeFilter::output(std::uint64_t k, double t_s) const {
+    AttitudeEstimate e;
+    e.stamp = {k, t_s};
+    e.q_nb = math::from_wxyz(x_.segment<4>(att::kQ));
+    const math::Euler eu = math::euler_from_quat(e.q_nb);
+    e.euler_rad = {eu.yaw_rad, eu.pitch_rad, eu.bank_rad};
+    e.w_nb_b_rps = x_.segment<3>(att::kW);
+    e.gyr_bias_rps = x_.segment<3>(att::kEgyr);
+    e.mag_bias_nT = x_.segment<3>(att::kEmag);
+    e.b_dev_n_nT = x_.segment<3>(att::kBdev);
+    e.att_sigma_rad = attitude_covariance_n().diagonal().cwiseMax(0.0).cwiseSqrt();
+    return e;
+}
+
+}  // namespace gdnav::nav

@@ -1,0 +1,94 @@
+#pragma once
+// Attitude filter (paper "Attitude Filter"; reference filter_att02/03/04, models-nav.md §4). Model, observation
+// equations and Jacobians: attitude_model.hpp. A plain additive EKF on 16 states with the quaternion as 4 raw
+// components, renormalised after the prediction and after the update (reference formulation, kept so results are
+// comparable with the paper; the covariance is not projected).
+//
+// Inputs per step k:  ImuSample (gyro w~_ib_b, accelerometer f~_ib_b), MagSample (B~_b) of step k, and the
+//                     PositionEstimate of step k-1 (source of p_n: position, ground velocity, wind, E_acc).
+// Output:             AttitudeEstimate (q_nb, Euler 3-2-1, w_nb_b, E_gyr, E_mag, B_dev, 1-sigma attitude about N).
+// Step:  A = df/dx at x+(k-1), Phi = I + A dt + (A dt)^2/2 (`transition_order`), x-(k) = x+ + dt f(x+), normalise q,
+//        P- = Phi P Phi^T + Q;  y = [w~, f~, B~], Joseph update with H at x-, normalise q.
+// Variant (`attitude.specific_force` of a variant file): baseline | zero_fb_derivatives | zero_fn_derivatives;
+// only the coupling term of the specific-force observation differs (att::coupling_velocity_n).
+// Tuning (config/nav/tuning.yaml, `attitude`): Q and R as the reference "configuration #4" (models-nav.md §4.4),
+// initialisation as nav_init.hpp.
+#include <cstdint>
+
+#include "attitude_model.hpp"
+#include "config/config.hpp"
+#include "math/rotation.hpp"
+#include "nav_init.hpp"
+#include "random/stream.hpp"
+
+namespace gdnav::nav {
+
+// Explicit initial estimate and its diagonal 1-sigma (attitude as a rotation angle, or as a quaternion variance).
+struct AttitudeInit {
+    Quat q_nb{Quat::Identity()};
+    Vec3 w_nb_b_rps{Vec3::Zero()};
+    Vec3 gyr_bias_rps{Vec3::Zero()};
+    Vec3 mag_bias_nT{Vec3::Zero()};
+    Vec3 b_dev_n_nT{Vec3::Zero()};
+    double att_sigma_rad{0.0};  // if > 0: P_qq = (sigma^2/4) Xi(q) Xi(q)^T (isotropic angle error)
+    double q_p0{0.0};           // else:   P_qq = q_p0 I4 (reference)
+    Vec3 w_nb_sigma_rps{Vec3::Zero()};
+    Vec3 gyr_bias_sigma_rps{Vec3::Zero()};
+    Vec3 mag_bias_sigma_nT{Vec3::Zero()};
+    Vec3 b_dev_sigma_nT{Vec3::Zero()};
+};
+
+class AttitudeFilter {
+public:
+    struct Tuning {
+        double dt_s{0.01};
+        int transition_order{2};
+        att::StateVec q_diag = att::StateVec::Zero();
+        att::MeasVec r_diag = att::MeasVec::Zero();
+        att::SpecificForceModel model{att::SpecificForceModel::kBaseline};
+        InitMode init_mode{InitMode::kMeasurements};
+        MeasurementInitSigmas init_sigmas;
+        ReferenceInitErrors init_errors;
+        double gyr_noise_var{5.63e-7};  // per-sample gyro white-noise variance, added to P0 of w_nb
+    };
+
+    // tuning: `attitude` section of config/nav/tuning.yaml; variant: `attitude` section of a variant file.
+    // The stream provides the reference-mode initial errors.
+    void configure(const config::Config& tuning, const config::Config& variant, rnd::Stream stream);
+    void configure(const Tuning& tuning, rnd::Stream stream);
+
+    // Initialisation per `init.mode`. measurements: from the first IMU/mag samples, the air data estimate and the
+    // first GNSS fix (position for the model field and declination). reference: needs `truth` (throws otherwise).
+    AttitudeEstimate initialize(std::uint64_t k, double t_s, const ImuSample& imu, const MagSample& mag,
+                                const AirDataEstimate& air, const GnssSample& gnss,
+                                const StartTruth* truth = nullptr);
+    AttitudeEstimate initialize(std::uint64_t k, double t_s, const AttitudeInit& init);
+
+    AttitudeEstimate step(std::uint64_t k, double t_s, const ImuSample& imu, const MagSample& mag,
+                          const PositionEstimate& pos_prev);
+
+    [[nodiscard]] bool initialized() const { return initialized_; }
+    [[nodiscard]] const att::StateVec& state() const { return x_; }
+    [[nodiscard]] const att::StateCov& covariance() const { return p_; }
+    [[nodiscard]] const Tuning& tuning() const { return tun_; }
+    [[nodiscard]] double last_nis() const { return last_nis_; }
+    [[nodiscard]] Quat estimate_q() const { return math::from_wxyz(x_.segment<4>(att::kQ)); }
+    // 3x3 covariance of the attitude error about N axes (small angles), from the quaternion block of P.
+    [[nodiscard]] Eigen::Matrix3d attitude_covariance_n() const;
+
+private:
+    AttitudeEstimate output(std::uint64_t k, double t_s) const;
+    void normalise_quaternion();
+
+    Tuning tun_;
+    rnd::Stream stream_;
+    att::StateVec x_ = att::StateVec::Zero();
+    att::StateCov p_ = att::StateCov::Zero();
+    double last_nis_{0.0};
+    bool initialized_{false};
+};
+
+// Parses `specific_force: baseline | zero_fb_derivatives | zero_fn_derivatives`.
+att::SpecificForceModel parse_specific_force_model(const config::Config& variant);
+
+}  // namespace gdnav::nav
