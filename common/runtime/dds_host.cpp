@@ -1,7 +1,9 @@
 #include "runtime/dds_host.hpp"
 
 #include <array>
+#include <atomic>
 #include <map>
+#include <mutex>
 #include <set>
 
 #include <fastdds/dds/core/condition/WaitSet.hpp>
@@ -59,7 +61,23 @@ struct DdsHost::Impl {
     DataReader* status_reader{nullptr};
     DataWriter* done_writer{nullptr};
     DataWriter* status_writer{nullptr};
-    WaitSet waitset;
+    WaitSet waitset;  // control-plane readers: RunControl and ComponentStatus (periodic work between waits)
+
+    // Data and Tick readers are served from Fast DDS's listener threads (on_data_available): the step's work is
+    // done in the thread that received the sample, which saves a thread hand-over per sample (measured 10-45%
+    // faster on 2.9). One recursive mutex serialises everything; a write from inside a callback may deliver to a
+    // reader of this very process synchronously, so re-entrant calls only fill inboxes (in_advance).
+    // Listener threads never block on the mutex (Fast DDS may call them with a reader lock held, and the lock
+    // holder may be taking from that reader): they raise `pending` and try_lock; whoever holds the lock drains
+    // again before leaving (pump()).
+    struct DataListener final : DataReaderListener {
+        Impl* host{nullptr};
+        void on_data_available(DataReader*) override { host->pump(); }
+    } listener;
+    std::recursive_mutex mtx;
+    std::atomic<bool> pending{false};
+    bool in_advance{false};
+    bool closing{false};
 
     enum class Phase { Announce, Matching, Ready, Running } phase{Phase::Announce};
     std::vector<msg::MemberInfo> table;
@@ -119,18 +137,42 @@ struct DdsHost::Impl {
                 l.outputs.emplace_back(o, dds->writer(o->topic(), o->ops(), kDataWriterProfile));
             locals.push_back(std::move(l));
         }
-        for (DataReader* r : all_readers()) {
+        for (DataReader* r : {control_reader, status_reader}) {
             StatusCondition& cond = r->get_statuscondition();
             cond.set_enabled_statuses(StatusMask::data_available());
             waitset.attach_condition(cond);
         }
+        listener.host = this;
     }
 
-    std::vector<DataReader*> all_readers() {
-        std::vector<DataReader*> v{tick_reader, control_reader, status_reader};
+    std::vector<DataReader*> data_readers() {
+        std::vector<DataReader*> v{tick_reader};
         for (auto& c : channels) v.push_back(c->reader);
         return v;
     }
+
+    // New Tick or data sample (listener threads, and the main loop after its own work).
+    void pump() {
+        pending.store(true);
+        while (pending.load()) {
+            if (!mtx.try_lock()) return;  // the holder sees `pending` before it leaves
+            pending.store(false);
+            if (!closing) process_data(steady_now_s());
+            mtx.unlock();
+        }
+    }
+
+    void process_data(double now) {
+        read_ticks(now);
+        for (auto& l : locals)
+            for (Channel* ch : l.inputs) read_data(l, *ch);
+        if (in_advance) return;
+        in_advance = true;
+        while (advance()) {
+        }
+        in_advance = false;
+    }
+
 
     void send_status(const Local& l, msg::StatusKind kind, const std::string& message) {
         status_out.run_id(rc.info.run_index);
@@ -354,8 +396,11 @@ struct DdsHost::Impl {
         ConditionSeq active;
         const Duration_t slice(0, static_cast<std::uint32_t>(kWaitSliceS * 1e9));
         int code = kExitOk;
+        for (DataReader* r : data_readers()) r->set_listener(&listener, StatusMask::data_available());
+        std::unique_lock<std::recursive_mutex> lock(mtx, std::defer_lock);
         while (true) {
             waitset.wait(active, slice);
+            lock.lock();
             const double now = steady_now_s();
             if (stop_requested()) {
                 spdlog::warn("host {}: stopped by signal {}", host_id, stop_signal());
@@ -364,16 +409,13 @@ struct DdsHost::Impl {
             }
             if (!read_control(code)) break;
             read_status(now);
-            read_ticks(now);
-            for (auto& l : locals)
-                for (Channel* ch : l.inputs) read_data(l, *ch);
             if (phase == Phase::Matching && all_matched()) {
                 phase = Phase::Ready;
                 next_heartbeat_s = 0.0;  // report READY at once
             }
             heartbeat(now);
-            while (advance()) {
-            }
+            pending.store(false);
+            process_data(now);
             if (phase == Phase::Announce || (phase != Phase::Running && !have_tick)) {
                 if (phase == Phase::Announce && now - start_s > rc.startup_timeout_s) {
                     spdlog::error("no clock: no member table from the clock '{}' within {:.1f} s", kClockName,
@@ -393,7 +435,13 @@ struct DdsHost::Impl {
                 code = kExitLostClock;
                 break;
             }
+            lock.unlock();
+            pump();
         }
+        closing = true;
+        lock.unlock();
+        for (DataReader* r : data_readers()) r->set_listener(nullptr);
+        lock.lock();
         for (auto& l : locals) {
             if (code != kExitOk) send_status(l, msg::STATUS_EXIT, "exit code " + std::to_string(code));
             l.comp->finish(code == kExitOk);
