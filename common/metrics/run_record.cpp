@@ -1,0 +1,120 @@
+#include "metrics/run_record.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "config/config.hpp"
+
+namespace gdnav::metrics {
+
+namespace fs = std::filesystem;
+
+std::string format_double17(double v) {
+    if (std::isnan(v)) return ".nan";
+    if (std::isinf(v)) return v > 0 ? ".inf" : "-.inf";
+    char buf[40];
+    std::snprintf(buf, sizeof(buf), "%.17g", v);
+    return buf;
+}
+
+RunRecord make_run_record(const RunMetrics& m, bool complete, std::uint64_t seed, std::uint64_t run_index,
+                          std::uint64_t steps) {
+    RunRecord r;
+    r.complete = complete;
+    r.seed = seed;
+    r.run_index = run_index;
+    r.steps = steps;
+    r.t_gnss_s = m.t_gnss_s();
+    r.t_end_s = m.t_last_s();
+    r.samples = m.stats(Signal::yaw).count();
+    r.distance_m = m.distance_since_gnss_m();
+    r.hor_pct = m.final_percent(Signal::hor);
+    r.cross_pct = m.final_percent(Signal::cross);
+    r.along_pct = m.final_percent(Signal::along);
+    for (const auto& info : kSignals) {
+        const RunningStats& s = m.stats(info.signal);
+        r.signals[index(info.signal)] = {s.mean(), s.std(), s.smax(), s.last()};
+    }
+    return r;
+}
+
+std::string to_yaml(const RunRecord& r) {
+    std::ostringstream o;
+    auto d = [](double v) { return format_double17(v); };
+    o << "# gdnav per-run navigation metrics (nav_recorder); SI units, window t in [0, t_end]; docs/montecarlo.md\n";
+    o << "complete: " << (r.complete ? "true" : "false") << "\n";
+    o << "seed: " << r.seed << "\nrun_index: " << r.run_index << "\nsteps: " << r.steps << "\n";
+    o << "t_gnss_s: " << d(r.t_gnss_s) << "\nt_end_s: " << d(r.t_end_s) << "\nsamples: " << r.samples << "\n";
+    o << "distance_since_gnss_m: " << d(r.distance_m) << "\n";
+    o << "final_percent: {hor: " << d(r.hor_pct) << ", cross: " << d(r.cross_pct) << ", along: " << d(r.along_pct)
+      << "}\n";
+    o << "signals:\n";
+    for (const auto& info : kSignals) {
+        const SignalSummary& s = r.signals[index(info.signal)];
+        o << "  " << info.key << ": {mean: " << d(s.mean) << ", std: " << d(s.std) << ", max: " << d(s.max)
+          << ", final: " << d(s.final) << "}\n";
+    }
+    return o.str();
+}
+
+void write_run_record(const fs::path& file, const RunRecord& r) {
+    const fs::path tmp = file.string() + ".tmp";
+    {
+        std::ofstream f(tmp, std::ios::trunc);
+        f << to_yaml(r);
+        if (!f) throw std::runtime_error("cannot write " + tmp.string());
+    }
+    fs::rename(tmp, file);
+}
+
+namespace {
+
+double read_double(const config::Config& c, const char* key) {
+    const YAML::Node n = c.node()[key];
+    if (!n || !n.IsScalar()) c.fail(key, "missing: a number is required");
+    const std::string s = n.Scalar();
+    if (s == ".nan" || s == ".NaN" || s == ".NAN") return std::numeric_limits<double>::quiet_NaN();
+    return c.get_double(key);
+}
+
+}  // namespace
+
+RunRecord read_run_record(const fs::path& file) {
+    const config::Config c = config::Config::load(file);
+    RunRecord r;
+    r.complete = c.get_bool("complete");
+    r.seed = c.get_uint64("seed");
+    r.run_index = c.get_uint64("run_index");
+    r.steps = c.get_uint64("steps");
+    r.t_gnss_s = read_double(c, "t_gnss_s");
+    r.t_end_s = read_double(c, "t_end_s");
+    r.samples = c.get_uint64("samples");
+    r.distance_m = read_double(c, "distance_since_gnss_m");
+    const config::Config pct = c.child("final_percent");
+    r.hor_pct = read_double(pct, "hor");
+    r.cross_pct = read_double(pct, "cross");
+    r.along_pct = read_double(pct, "along");
+    const config::Config sig = c.child("signals");
+    for (const auto& info : kSignals) {
+        const config::Config s = sig.child(info.key);
+        r.signals[index(info.signal)] = {read_double(s, "mean"), read_double(s, "std"), read_double(s, "max"),
+                                         read_double(s, "final")};
+    }
+    return r;
+}
+
+bool run_record_complete(const fs::path& file) {
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec)) return false;
+    try {
+        const config::Config c = config::Config::load(file);
+        return c.get_bool("complete", false);
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
+}  // namespace gdnav::metrics

@@ -1,0 +1,63 @@
+#pragma once
+// The per-run metrics record, `<out_dir>/metrics.yaml` (written by nav_recorder, read by the batch runner and the
+// report). Doubles are printed with 17 significant digits, so the file round-trips bit for bit and two runs are
+// bit-identical in their metrics iff their files are equal byte for byte.
+//
+//   complete: true                 # false while running / after an interrupted or killed run
+//   seed: 1
+//   run_index: 7
+//   steps: 385001                  # steps processed by the recorder
+//   t_gnss_s: 100                  # GNSS loss time used for the distance
+//   t_end_s: 3800                  # time of the last step in the metrics window
+//   samples: 380001                # steps in the metrics window t in [0, t_end]
+//   distance_since_gnss_m: ...     # true ground distance flown since t_GNSS
+//   final_percent: {hor: ..., cross: ..., along: ...}    # 100 * final error / distance
+//   signals:                       # per error signal (run_metrics.hpp): SI units, key names carry the unit
+//     yaw_rad: {mean: ..., std: ..., max: ..., final: ...}
+//     ...
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "metrics/run_metrics.hpp"
+
+namespace gdnav::metrics {
+
+struct SignalSummary {
+    double mean{0.0};
+    double std{0.0};
+    double max{0.0};  // signed smax
+    double final{0.0};
+};
+
+struct RunRecord {
+    bool complete{false};
+    std::uint64_t seed{0};
+    std::uint64_t run_index{0};
+    std::uint64_t steps{0};
+    double t_gnss_s{0.0};
+    double t_end_s{0.0};
+    std::uint64_t samples{0};
+    double distance_m{0.0};
+    double hor_pct{0.0};
+    double cross_pct{0.0};
+    double along_pct{0.0};
+    std::array<SignalSummary, kSignalCount> signals{};
+    [[nodiscard]] const SignalSummary& operator[](Signal s) const { return signals[index(s)]; }
+};
+
+RunRecord make_run_record(const RunMetrics& m, bool complete, std::uint64_t seed, std::uint64_t run_index,
+                          std::uint64_t steps);
+std::string to_yaml(const RunRecord& r);
+// Writes atomically (temporary file + rename), so a reader never sees half a file.
+void write_run_record(const std::filesystem::path& file, const RunRecord& r);
+// Throws config::ConfigError naming the file and key when the file is missing or malformed.
+RunRecord read_run_record(const std::filesystem::path& file);
+// True when the file exists, parses and says complete: true.
+bool run_record_complete(const std::filesystem::path& file);
+
+// "%.17g", with .nan / .inf / -.inf for the non-finite values (YAML spelling).
+std::string format_double17(double v);
+
+}  // namespace gdnav::metrics

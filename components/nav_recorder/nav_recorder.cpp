@@ -1,0 +1,207 @@
+#include "nav_recorder.hpp"
+
+#include <signal.h>
+
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include <spdlog/spdlog.h>
+
+#include "h5_file.hpp"
+#include "metrics/run_metrics.hpp"
+#include "metrics/run_record.hpp"
+#include "runtime/messages.hpp"
+#include "series_columns.hpp"
+
+namespace gdnav::nav_recorder {
+
+namespace fs = std::filesystem;
+using config::Range;
+
+namespace {
+
+constexpr std::int64_t kFormatVersion = 1;
+
+// Holds SIGINT/SIGTERM while the file is being updated: a process without handlers (the direct layout) then dies
+// after the update, never in the middle of it. (SIGKILL cannot be held; that window is a few milliseconds.)
+class SignalHold {
+public:
+    SignalHold() {
+        sigset_t hold;
+        sigemptyset(&hold);
+        sigaddset(&hold, SIGINT);
+        sigaddset(&hold, SIGTERM);
+        pthread_sigmask(SIG_BLOCK, &hold, &previous_);
+    }
+    ~SignalHold() { pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
+    SignalHold(const SignalHold&) = delete;
+    SignalHold& operator=(const SignalHold&) = delete;
+
+private:
+    sigset_t previous_{};
+};
+
+class NavRecorder final : public runtime::Component {
+public:
+    using Component::Component;
+    ~NavRecorder() override {
+        // finish() not called (an exception unwound the run): leave a consistent file marked incomplete.
+        try {
+            if (file_ && file_->open()) file_->close();
+        } catch (const std::exception&) {
+        }
+    }
+
+    void configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream&) override {
+        run_ = run;
+        const double t_gnss = cfg.get_double("t_gnss_s", 100.0, Range{-1e6, 1e7});
+        metrics_ = metrics::RunMetrics(t_gnss, cfg.get_double("metrics_start_s", 0.0, Range{-1e6, 1e7}));
+        decimation_ = static_cast<std::uint64_t>(cfg.get_int("decimation", 10, 1, 1'000'000));
+        flush_rows_ = static_cast<std::size_t>(cfg.get_int("flush_rows", 600, 1, 1'000'000));
+        compression_ = static_cast<int>(cfg.get_int("compression", 4, 0, 9));
+        if (cfg.get_bool("gnss_track", true))
+            gnss_ = std::make_unique<runtime::Input<msg::GnssSample>>(*this, topics::kGnss);
+        dir_ = run.out_dir;
+        truth_rows_.resize(flush_rows_ * kTruthColumns);
+        est_rows_.resize(flush_rows_ * kEstimateColumns);
+        err_rows_.resize(flush_rows_ * kErrorColumns);
+        gnss_rows_.resize(flush_rows_ * kGnssColumns);
+    }
+
+    void step(const runtime::StepContext& ctx) override {
+        if (!truth_.available()) return;  // the essential producer is gone; nothing to compare
+        const msg::Truth& t = truth_.get();
+        if (!started_) start(t);
+        const auto& v = t.v_n_mps();
+        metrics_.add_ground_speed(ctx.t_s, ctx.dt_s, std::hypot(v[0], v[1]));
+        const bool have_est = air_.available() && att_.available() && pos_.available();
+        std::optional<metrics::NavErrors> err;
+        if (have_est) {
+            err = metrics::nav_errors(estimate_state(air_.get(), att_.get(), pos_.get()), truth_state(t), origin_.radii);
+            metrics_.add_errors(ctx.t_s, ctx.dt_s, *err);
+        }
+        last_k_ = ctx.k;
+        ++steps_;
+        if (dir_.empty()) return;
+        if (gnss_ && gnss_->available() && gnss_->get().fix_valid() && gnss_count_ < flush_rows_)
+            fill_gnss_row(&gnss_rows_[kGnssColumns * gnss_count_++], ctx.t_s, gnss_->get());
+        if (ctx.k % decimation_ == 0) {
+            fill_truth_row(&truth_rows_[kTruthColumns * rows_], ctx.t_s, t, origin_, metrics_.distance_since_gnss_m());
+            fill_estimate_row(&est_rows_[kEstimateColumns * rows_], ctx.t_s, air_.ptr(), att_.ptr(), pos_.ptr(),
+                              origin_, t.h_m());
+            fill_error_row(&err_rows_[kErrorColumns * rows_], ctx.t_s, err ? &*err : nullptr);
+            ++rows_;
+        }
+        if (rows_ == flush_rows_ || gnss_count_ == flush_rows_) flush(false);
+    }
+
+    void finish(bool completed) override {
+        if (finished_) return;
+        finished_ = true;
+        const bool complete = completed && started_ && last_k_ + 1 == run_.steps;
+        if (dir_.empty() || !started_) return;
+        try {
+            const SignalHold hold;
+            flush(complete);
+            std::vector<H5File::MetricsRow> rows;
+            for (const auto& info : metrics::kSignals) {
+                const auto& s = metrics_.stats(info.signal);
+                rows.push_back({std::string(info.key), s.count(), s.mean(), s.std(), s.smax(), s.last()});
+            }
+            file_->write_metrics("metrics", rows);
+            file_->set_attribute("complete", static_cast<std::int64_t>(complete ? 1 : 0));
+            file_->close();
+        } catch (const std::exception& e) {
+            spdlog::error("nav_recorder: {}", e.what());
+        }
+        const auto& hor = metrics_.stats(metrics::Signal::hor);
+        spdlog::info("nav_recorder: {} run; final horizontal error {:.1f} m ({:.2f} % of {:.0f} m since t_GNSS), "
+                     "mean attitude error {:.3f} deg -> {}",
+                     complete ? "complete" : "INCOMPLETE", hor.last(), metrics_.final_percent(metrics::Signal::hor),
+                     metrics_.distance_since_gnss_m(), math::rad2deg(metrics_.stats(metrics::Signal::rot).mean()),
+                     dir_);
+    }
+
+private:
+    void start(const msg::Truth& t) {
+        started_ = true;
+        origin_.lat_rad = t.lat_rad();
+        origin_.lon_rad = t.lon_rad();
+        origin_.radii = earth::radii(t.lat_rad());
+        if (dir_.empty()) return;
+        fs::create_directories(dir_);
+        std::error_code ec;
+        fs::remove(fs::path(dir_) / "metrics.yaml", ec);  // a stale record of an earlier run must not survive
+        file_ = std::make_unique<H5File>(fs::path(dir_) / "run.h5");
+        tables_[0] = file_->add_table("truth", truth_columns(), flush_rows_, compression_);
+        tables_[1] = file_->add_table("estimate", estimate_columns(), flush_rows_, compression_);
+        tables_[2] = file_->add_table("error", error_columns(), flush_rows_, compression_);
+        if (gnss_) tables_[3] = file_->add_table("gnss", gnss_columns(), flush_rows_, compression_);
+        file_->set_attribute("format", std::string("gdnav-nav-record"));
+        file_->set_attribute("format_version", kFormatVersion);
+        file_->set_attribute("complete", static_cast<std::int64_t>(0));
+        file_->set_attribute("seed", static_cast<std::int64_t>(run_.seed));
+        file_->set_attribute("run_index", static_cast<std::int64_t>(run_.run_index));
+        file_->set_attribute("dt_s", run_.dt_s);
+        file_->set_attribute("t0_s", run_.t0_s);
+        file_->set_attribute("decimation", static_cast<std::int64_t>(decimation_));
+        file_->set_attribute("t_gnss_s", metrics_.t_gnss_s());
+        file_->set_attribute("steps_planned", static_cast<std::int64_t>(run_.steps));
+        file_->set_attribute("lat0_rad", origin_.lat_rad);
+        file_->set_attribute("lon0_rad", origin_.lon_rad);
+        file_->set_table_attribute(tables_[0], "description", "true state (Truth topic), SI units, NED");
+        file_->set_table_attribute(tables_[1], "description", "navigation estimate (AirData/Attitude/PositionEstimate)");
+        file_->set_table_attribute(tables_[2], "description", "estimate minus truth (docs/montecarlo.md)");
+        file_->flush();
+    }
+
+    void flush(bool complete) {
+        if (!file_) return;
+        const SignalHold hold;
+        file_->append(tables_[0], truth_rows_.data(), rows_);
+        file_->append(tables_[1], est_rows_.data(), rows_);
+        file_->append(tables_[2], err_rows_.data(), rows_);
+        if (gnss_) file_->append(tables_[3], gnss_rows_.data(), gnss_count_);
+        rows_ = 0;
+        gnss_count_ = 0;
+        file_->set_attribute("steps_recorded", static_cast<std::int64_t>(steps_));
+        file_->set_attribute("distance_since_gnss_m", metrics_.distance_since_gnss_m());
+        file_->flush();
+        metrics::write_run_record(fs::path(dir_) / "metrics.yaml",
+                                  metrics::make_run_record(metrics_, complete, run_.seed, run_.run_index, steps_));
+    }
+
+    runtime::Input<msg::Truth> truth_{*this, topics::kTruth};
+    runtime::Input<msg::AirDataEstimate> air_{*this, topics::kAirData};
+    runtime::Input<msg::AttitudeEstimate> att_{*this, topics::kAttitude};
+    runtime::Input<msg::PositionEstimate> pos_{*this, topics::kPosition};
+    std::unique_ptr<runtime::Input<msg::GnssSample>> gnss_;
+
+    runtime::RunInfo run_;
+    metrics::RunMetrics metrics_;
+    Origin origin_;
+    std::string dir_;
+    std::uint64_t decimation_{10};
+    std::size_t flush_rows_{600};
+    int compression_{4};
+    std::unique_ptr<H5File> file_;
+    std::array<int, 4> tables_{-1, -1, -1, -1};
+    std::vector<double> truth_rows_, est_rows_, err_rows_, gnss_rows_;
+    std::size_t rows_{0};
+    std::size_t gnss_count_{0};
+    std::uint64_t steps_{0};
+    std::uint64_t last_k_{0};
+    bool started_{false};
+    bool finished_{false};
+};
+
+}  // namespace
+
+void register_nav_recorder(runtime::ComponentRegistry& reg) {
+    reg.add("nav_recorder", "navigation errors, online metrics and HDF5 time series (run.h5, metrics.yaml)",
+            [](const std::string& n) { return std::make_unique<NavRecorder>(n); });
+}
+
+}  // namespace gdnav::nav_recorder
