@@ -71,11 +71,14 @@ void DirectExecutor::step(std::uint64_t k) {
     }
 }
 
-std::uint64_t DirectExecutor::run(const std::function<void(std::uint64_t)>& progress, std::uint64_t every) {
+std::uint64_t DirectExecutor::run(const std::function<bool(std::uint64_t)>& progress, std::uint64_t every) {
     std::uint64_t k = 0;
     for (; k < run_.steps; ++k) {
         step(k);
-        if (progress && (k + 1) % every == 0) progress(k + 1);
+        if (progress && (k + 1) % every == 0 && !progress(k + 1)) {
+            finish(false);
+            return k + 1;
+        }
     }
     finish(true);
     return k;

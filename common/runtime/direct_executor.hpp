@@ -13,8 +13,9 @@ class DirectExecutor {
 public:
     DirectExecutor(std::vector<std::unique_ptr<Component>> components, const RunInfo& run);
     ~DirectExecutor();
-    // Runs steps [0, run.steps). `progress(k)` is called every `progress_every` steps. Returns steps executed.
-    std::uint64_t run(const std::function<void(std::uint64_t)>& progress = {}, std::uint64_t progress_every = 1000);
+    // Runs steps [0, run.steps). `progress(k)` is called every `progress_every` steps and may return false to stop
+    // the run early (components then finish with completed = false). Returns the steps executed.
+    std::uint64_t run(const std::function<bool(std::uint64_t)>& progress = {}, std::uint64_t progress_every = 1000);
     // Runs a single step k (for tests and benchmarks).
     void step(std::uint64_t k);
     void finish(bool completed);

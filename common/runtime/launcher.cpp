@@ -95,20 +95,27 @@ bool wait_all(std::vector<Child>& cs, double seconds, const std::function<void(C
 int run_direct(const RunConfig& rc, const ComponentRegistry& reg, bool progress, double* steps_per_s) {
     auto comps = rc.build(reg);
     DirectExecutor ex(std::move(comps), rc.info);
+    install_stop_signal_handlers();
     const double t0 = steady_now_s();
     double next_log = t0 + 2.0;
-    ex.run(
+    const std::uint64_t done = ex.run(
         [&](std::uint64_t k) {
-            if (!progress) return;
+            if (stop_requested()) return false;
+            if (!progress) return true;
             const double now = steady_now_s();
-            if (now < next_log) return;
+            if (now < next_log) return true;
             next_log = now + 2.0;
             const double sps = static_cast<double>(k) / (now - t0);
             spdlog::info("step {}/{} ({:.0f}%), t = {:.1f} s, {:.0f} steps/s, {:.0f}x real time", k, rc.info.steps,
                          100.0 * static_cast<double>(k) / static_cast<double>(rc.info.steps), rc.info.time_of(k), sps,
                          sps * rc.info.dt_s);
+            return true;
         },
-        1000);
+        100);
+    if (done < rc.info.steps) {
+        spdlog::error("run interrupted by signal {} at step {}", stop_signal(), done);
+        return kExitInterrupted;
+    }
     const double wall = steady_now_s() - t0;
     const double sps = static_cast<double>(rc.info.steps) / std::max(wall, 1e-9);
     if (steps_per_s) *steps_per_s = sps;

@@ -25,6 +25,7 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 // Writes a copy of a scenario with a recorder limited to Truth + GuidanceTargets at `decimation`.
 fs::path scenario_copy(const std::string& name, int decimation, const fs::path& dir, bool all_topics = false) {
     YAML::Node doc = YAML::LoadFile(std::string(GDNAV_SOURCE_DIR) + "/config/scenarios/" + name + ".yaml");
+    if (!doc["components"]["recorder"]) doc["components"]["recorder"]["type"] = "recorder";
     if (!all_topics)
         doc["components"]["recorder"]["topics"] = std::vector<std::string>{"gdnav/Truth", "gdnav/GuidanceTargets"};
     doc["components"]["recorder"]["decimation"] = decimation;
@@ -103,11 +104,12 @@ TEST(Flight, Scenario1MissionOnTruthInTurbulence) { fly("truth_loop_s1", "s1"); 
 
 TEST(Flight, Scenario2MissionOnTruthInTurbulence) { fly("truth_loop_s2", "s2"); }
 
-TEST(Flight, ManySeedsOfScenario2FlyWithoutDivergenceOrEnvelopeExit) {
-    // Each seed draws its own wind, INSA offsets, Earth-field deviations and turbulence.
+TEST(Flight, FiftySeedsOfScenario2FlyWithoutDivergenceOrEnvelopeExit) {
+    // The paper's scenario #2 generator: each seed draws its own mission (8 turns), wind, INSA offsets,
+    // Earth-field deviations and turbulence.
     const auto dir = temp_dir("seeds");
-    const fs::path file = scenario_copy("truth_loop_s2", 100, dir);
-    for (int seed = 1; seed <= 20; ++seed) {
+    const fs::path file = scenario_copy("paper2_truth", 100, dir);
+    for (int seed = 1; seed <= 50; ++seed) {
         const fs::path out = dir / ("seed" + std::to_string(seed));
         const Result r = run({GDNAV_GDNAV_EXE, "run", "--scenario", file.string(), "--layout", "direct", "--seed",
                               std::to_string(seed), "--out", out.string()},
