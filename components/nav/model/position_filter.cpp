@@ -88,8 +88,15 @@ PositionEstimate PositionFilter::initialize(std::uint64_t k, double t_s, const I
     p_.setZero();
     p_.diagonal().head<3>() << s_lon * s_lon, s_lat * s_lat, tun_.gnss_ver_sigma_m * tun_.gnss_ver_sigma_m;
     p_.diagonal().segment<3>(aided::kV).setConstant(tun_.gnss_v_sigma_mps * tun_.gnss_v_sigma_mps);
+    // f0 = f~(t0) - E_acc,0, so the errors of f0 and E_acc,0 are opposite: cov(f0, E0) = -P_E. The reference's
+    // diagonal P0 drops this term; then the first steps' change of the measured specific force (a gust, a throttle
+    // step) is shared between f and E_acc by their variances, and a bias error of several sigma is left in E_acc,
+    // which the attitude filter turns into a tilt (and, through the magnetometer, a heading) error.
     p_.diagonal().segment<3>(aided::kF) = acc_err_sigma0.array().square() + tun_.r_acc_m2ps4;
     p_.diagonal().segment<3>(aided::kE) = acc_err_sigma0.array().square();
+    const Eigen::Matrix3d cov_fe = -Eigen::Matrix3d(acc_err_sigma0.array().square().matrix().asDiagonal());
+    p_.block<3, 3>(aided::kF, aided::kE) = cov_fe;
+    p_.block<3, 3>(aided::kE, aided::kF) = cov_fe;
     wind_lp_ = wind_at_fix_ = wind_instant(air, att);
     dp_lp_ = dp_at_fix_ = dp_instant(air);
     monitor_.reset(t_s);

@@ -1,6 +1,7 @@
 #pragma once
 // Runs the three navigation filters in the step order of the architecture (air -> attitude(p_n of k-1) -> position)
 // on synthetic data, with the repository's tuning and variant files (optionally edited).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@ struct ChainOptions {
     int last_fix_step{-1};       // fixes after this step are dropped (-1: never)
     int dead_at_step{-1};        // call set_gnss_publisher_dead() before this step (-1: never)
     YAML::Node attitude_override;  // merged into tuning.attitude (e.g. r, q_per_step)
+    std::function<void(int, synth::Sample&)> edit;  // optional: alters the sample of step k before the filters see it
 };
 
 struct ChainRun {
@@ -71,6 +73,7 @@ inline ChainRun run_chain(const synth::Scenario& sc, const ChainOptions& o, std:
     for (int k = 0; k <= o.steps; ++k) {
         synth::Sample s = gen.next();
         if (o.last_fix_step >= 0 && k > o.last_fix_step) s.gnss.fix_valid = false;
+        if (o.edit) o.edit(k, s);
         const double t = s.truth.t_s;
         if (k == 0) {
             run.air.push_back(air.initialize(0, t, s.air, s.atm));
