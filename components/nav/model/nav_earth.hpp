@@ -1,44 +1,35 @@
 #pragma once
-// ************************************************************************************************************
-// TO BE REPLACED by common/earth and common/atmosphere once they land (the lead merges them). Minimal Earth and
-// atmosphere math that the navigation filters need on board; numbers from models-nav.md §0, §2.4, §5.3, §9.
-// ************************************************************************************************************
-//   WGS84 radii:  N = a / sqrt(1 - e^2 sin^2 lat),  M = a (1 - e^2) / (1 - e^2 sin^2 lat)^1.5
-//   Normal gravity (Somigliana + 2nd-order altitude terms), purely vertical in NED:
-//     g0(lat) = g_e (1 + k sin^2 lat) / sqrt(1 - e^2 sin^2 lat),  k = b g_p / (a g_e) - 1
-//     g(lat, h) = g0 [1 - (2/a)(1 + f + m - 2 f sin^2 lat) h + (3/a^2) h^2],  m = w_ie^2 a^2 b / GM
-//   Earth rate  w_ie_n = w_ie (cos lat, 0, -sin lat);  transport rate w_en_n = (vE/(N+h), -vN/(M+h), -vE tan lat/(N+h))
-//   Coriolis    a_cor_n = 2 w_ie_n x v_n
-//   ISA/INSA:   p(Hp) = p0 (1 + beta Hp / T0)^(-g0/(R beta));  Hp(p) = (T0/beta)((p/p0)^(-beta R/g0) - 1)
-//               dT = T - (T0 + beta Hp)
-//               H(Hp, dT, dp) = Hp - Hp0 + (dT/beta) ln[(T0 + beta Hp)/(T0 + beta Hp0)],  Hp0 = Hp(p0 + dp)
-//               (integral of dH/dHp = T/T_isa = 1 + dT/(T0 + beta Hp) from Hp0, where H = 0)
-//               dp(H, Hp, dT): the inverse for dp (Newton on Hp0), used by the GNSS-aided phase.
-//   Spherical geopotential <-> geometric altitude with R_E = 6 356 766 m:  H = R_E h/(R_E + h), h = R_E H/(R_E - H)
-//   Onboard magnetic model: bilinear interpolation in (lon, lat) of four WMM corner values (models-nav.md §9,
-//   "mix" area around lon 270..271 deg, lat 44..45 deg), linear extrapolation outside.
+// The navigation filters' view of the shared Earth and atmosphere toolkits (common/earth, common/atmosphere):
+// thin adapters with the names the filter code uses, plus the partial derivatives its Jacobians need that the
+// shared toolkits do not provide (dN/dlat, dM/dlat, dg/dlat, dg/dh). No second geodesy or INSA implementation.
+//   WGS84 radii N, M; normal gravity g(lat, h) (Somigliana + altitude terms) with derivatives; Earth rate,
+//   transport rate, Coriolis; ISA/INSA p(Hp), Hp(p), dp/dHp, dT, H(Hp, dT, dp), dp(H, Hp, dT); spherical H <-> h.
+//   Onboard magnetic model: the shared bilinear MagneticModel with the filter's own copy of the four WMM corner
+//   values (models-nav.md §9) — an onboard model is by nature separate from the simulated truth's.
 #include <Eigen/Core>
+
+#include "atmosphere/insa.hpp"
+#include "earth/wgs84.hpp"
 
 namespace gdnav::nav::earth {
 
 using Vec3 = Eigen::Vector3d;
 
-// WGS84 and physical constants (models-nav.md §0).
-inline constexpr double kA_m = 6378137.0;
-inline constexpr double kF = 1.0 / 298.257223563;
-inline constexpr double kB_m = kA_m * (1.0 - kF);
-inline constexpr double kE2 = kF * (2.0 - kF);
-inline constexpr double kGM_m3ps2 = 3.986004418e14;
-inline constexpr double kWie_rps = 7.292115e-5;
-inline constexpr double kGe_mps2 = 9.7803253359;  // normal gravity at the equator
-inline constexpr double kGp_mps2 = 9.8321849378;  // normal gravity at the poles
-inline constexpr double kRE_m = 6356766.0;        // spherical Earth radius for H <-> h
-// ISA
-inline constexpr double kG0_mps2 = 9.80665;
-inline constexpr double kR_JpkgK = 287.05287;
-inline constexpr double kBetaT_Kpm = -6.5e-3;
-inline constexpr double kT0_K = 288.15;
-inline constexpr double kP0_Pa = 101325.0;
+// Constants: the shared toolkits' (models-nav.md §0 values).
+inline constexpr double kA_m = ::gdnav::earth::wgs84::kA_m;
+inline constexpr double kF = ::gdnav::earth::wgs84::kF;
+inline constexpr double kB_m = ::gdnav::earth::wgs84::kB_m;
+inline constexpr double kE2 = ::gdnav::earth::wgs84::kE2;
+inline constexpr double kGM_m3ps2 = ::gdnav::earth::wgs84::kGM_m3ps2;
+inline constexpr double kWie_rps = ::gdnav::earth::wgs84::kOmegaIE_rps;
+inline constexpr double kGe_mps2 = ::gdnav::earth::wgs84::kGammaE_mps2;
+inline constexpr double kGp_mps2 = ::gdnav::earth::wgs84::kGammaP_mps2;
+inline constexpr double kRE_m = ::gdnav::earth::kRadiusGeopot_m;
+inline constexpr double kG0_mps2 = ::gdnav::atm::kG0_mps2;
+inline constexpr double kR_JpkgK = ::gdnav::atm::kR_JpkgK;
+inline constexpr double kBetaT_Kpm = ::gdnav::atm::kBetaT_Kpm;
+inline constexpr double kT0_K = ::gdnav::atm::kT0_K;
+inline constexpr double kP0_Pa = ::gdnav::atm::kP0_Pa;
 
 struct Radii {
     double n_m{0.0};  // prime vertical radius of curvature N

@@ -43,7 +43,7 @@ TEST(NavAir, LowPassesNoisyAirDataAndEstimatesTemperatureOffset) {
     // dT = T - (T0 + beta Hp) from the filtered T and Hp: the synthetic atmosphere has dT = 5 K.
     EXPECT_NEAR(e.dT_K, sc.dT_K, 0.05);
     EXPECT_NEAR(e.Hp_m, s.truth.Hp_m, 2.0);
-    EXPECT_NEAR(e.T_K, earth::kT0_K + sc.dT_K + earth::kBetaT_Kpm * s.truth.Hp_m, 0.02);
+    EXPECT_NEAR(e.T_K, nav::earth::kT0_K + sc.dT_K + nav::earth::kBetaT_Kpm * s.truth.Hp_m, 0.02);
 }
 
 TEST(NavAir, EstimatesRateOfClimb) {

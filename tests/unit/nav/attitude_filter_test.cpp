@@ -182,7 +182,7 @@ TEST(NavAttitude, CoarseAlignmentIsExactOnNoiseFreeData) {
     for (int i = 0; i < 20; ++i) {
         const math::Euler e{s.uniform(-3.0, 3.0), s.uniform(-0.5, 0.5), s.uniform(-0.8, 0.8)};
         const Quat q = math::quat_from_euler(e);
-        const Eigen::Vector3d b_n = earth::magnetic_model_n(math::deg2rad(270.3), math::deg2rad(44.6));
+        const Eigen::Vector3d b_n = nav::earth::magnetic_model_n(math::deg2rad(270.3), math::deg2rad(44.6));
         const Eigen::Vector3d f_b = q.conjugate() * Eigen::Vector3d(0.0, 0.0, -9.8);
         const Quat qc = coarse_attitude(f_b, q.conjugate() * b_n, b_n);
         EXPECT_LT(math::angle_between(q, qc), 1e-12);

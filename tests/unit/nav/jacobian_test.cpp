@@ -147,11 +147,11 @@ TEST(NavJacobians, EarthHelperDerivatives) {
     for (int i = 0; i < 10; ++i) {
         filters::Vec<2> x(s.uniform(-1.4, 1.4), s.uniform(0.0, 8000.0));
         auto f = [](const filters::Vec<2>& v) {
-            const earth::Radii r = earth::radii(v(0));
-            return Eigen::Vector3d(r.n_m, r.m_m, earth::normal_gravity(v(0), v(1)).g_mps2);
+            const nav::earth::Radii r = nav::earth::radii(v(0));
+            return Eigen::Vector3d(r.n_m, r.m_m, nav::earth::normal_gravity(v(0), v(1)).g_mps2);
         };
-        const earth::Radii r = earth::radii(x(0));
-        const earth::Gravity g = earth::normal_gravity(x(0), x(1));
+        const nav::earth::Radii r = nav::earth::radii(x(0));
+        const nav::earth::Gravity g = nav::earth::normal_gravity(x(0), x(1));
         Eigen::Matrix<double, 3, 2> ana;
         ana << r.dn_dlat, 0.0, r.dm_dlat, 0.0, g.dg_dlat, g.dg_dh;
         EXPECT_LE(rowwise_relative_error(ana, filters::numerical_jacobian<3, 2>(f, x)), kTol);
