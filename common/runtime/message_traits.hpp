@@ -62,10 +62,15 @@ const MessageOps& make_ops() {
             return UINT64_MAX;
         },
         [](const void* p, std::vector<std::uint8_t>& out) {
-            PS ps;
+            // Called per recorded sample: the type support and the payload buffer are reused (per thread).
+            thread_local PS ps;
+            thread_local eprosima::fastrtps::rtps::SerializedPayload_t payload;
             void* data = const_cast<void*>(p);
-            eprosima::fastrtps::rtps::SerializedPayload_t payload(ps.getSerializedSizeProvider(data)());
-            std::fill(payload.data, payload.data + payload.max_size, std::uint8_t{0});
+            const std::uint32_t size = ps.getSerializedSizeProvider(data)();
+            if (payload.max_size < size) payload.reserve(size);
+            std::fill(payload.data, payload.data + size, std::uint8_t{0});
+            payload.length = 0;
+            payload.pos = 0;
             ps.serialize(data, &payload);
             out.assign(payload.data, payload.data + payload.length);
         }};

@@ -28,4 +28,10 @@ private:
     std::map<std::string, Entry> entries_;
 };
 
+// Factory of a component class constructed from its instance name.
+template <class C>
+ComponentRegistry::Factory make_factory() {
+    return [](const std::string& name) { return std::make_unique<C>(name); };
+}
+
 }  // namespace gdnav::runtime

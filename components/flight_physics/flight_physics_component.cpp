@@ -5,6 +5,7 @@
 #include "flight_physics/model/flight_physics.hpp"
 #include "guidance/model/mission_yaml.hpp"
 #include "runtime/messages.hpp"
+#include "runtime/msg_eigen.hpp"
 #include "runtime/run_config.hpp"
 
 namespace gdnav::physics {
@@ -14,7 +15,7 @@ using config::Range;
 
 namespace {
 
-void put3(std::array<double, 3>& a, const Vec3& v) { a = {v.x(), v.y(), v.z()}; }
+using runtime::to_array;
 
 WindRampParams parse_wind(const Config& c) {
     WindRampParams w;
@@ -120,18 +121,18 @@ private:
         t.lon_rad(s.lon_rad);
         t.lat_rad(s.lat_rad);
         t.h_m(s.h_m);
-        put3(t.v_n_mps(), s.v_n_mps);
-        t.q_nb({s.q_nb.w(), s.q_nb.x(), s.q_nb.y(), s.q_nb.z()});
+        t.v_n_mps() = to_array(s.v_n_mps);
+        t.q_nb(to_array(s.q_nb));
         t.euler_rad({s.euler.yaw_rad, s.euler.pitch_rad, s.euler.bank_rad});
-        put3(t.w_ib_b_rps(), s.w_ib_b_rps);
-        put3(t.w_nb_b_rps(), s.w_nb_b_rps);
-        put3(t.dw_ib_b_rps2(), s.dw_ib_b_rps2);
-        put3(t.f_ib_b_mps2(), s.f_ib_b_mps2);
+        t.w_ib_b_rps() = to_array(s.w_ib_b_rps);
+        t.w_nb_b_rps() = to_array(s.w_nb_b_rps);
+        t.dw_ib_b_rps2() = to_array(s.dw_ib_b_rps2);
+        t.f_ib_b_mps2() = to_array(s.f_ib_b_mps2);
         t.tas_mps(s.tas_mps);
         t.aoa_rad(s.aoa_rad);
         t.aos_rad(s.aos_rad);
-        put3(t.wind_n_mps(), s.wind_n_mps);
-        put3(t.turb_b_mps(), s.turb_b_mps);
+        t.wind_n_mps() = to_array(s.wind_n_mps);
+        t.turb_b_mps() = to_array(s.turb_b_mps);
         t.dT_K(s.dT_K);
         t.dp_Pa(s.dp_Pa);
         t.Hp_m(s.Hp_m);
@@ -139,10 +140,10 @@ private:
         t.p_Pa(s.p_Pa);
         t.T_K(s.T_K);
         t.rho_kgpm3(s.rho_kgpm3);
-        put3(t.g_n_mps2(), s.g_n_mps2);
-        put3(t.g_model_n_mps2(), s.g_model_n_mps2);
-        put3(t.b_n_nT(), s.b_n_nT);
-        put3(t.b_model_n_nT(), s.b_model_n_nT);
+        t.g_n_mps2() = to_array(s.g_n_mps2);
+        t.g_model_n_mps2() = to_array(s.g_model_n_mps2);
+        t.b_n_nT() = to_array(s.b_n_nT);
+        t.b_model_n_nT() = to_array(s.b_model_n_nT);
         t.mass_kg(s.mass_kg);
         t.controls({s.controls.throttle, s.controls.elevator_rad, s.controls.aileron_rad, s.controls.rudder_rad});
     }

@@ -5,6 +5,7 @@
 #include "guidance/model/trigger.hpp"
 #include "runtime/component.hpp"
 #include "runtime/messages.hpp"
+#include "runtime/msg_eigen.hpp"
 
 namespace gdnav::guidance {
 
@@ -13,14 +14,8 @@ struct EstimateInputs {
         : air(owner, topics::kAirData), att(owner, topics::kAttitude), pos(owner, topics::kPosition) {}
 
     [[nodiscard]] bool available() const { return air.available() && att.available() && pos.available(); }
-    [[nodiscard]] math::Quat q_nb() const {
-        const auto& q = att.get().q_nb();
-        return {q[0], q[1], q[2], q[3]};
-    }
-    [[nodiscard]] math::Vec3 v_n() const {
-        const auto& v = pos.get().v_n_mps();
-        return {v[0], v[1], v[2]};
-    }
+    [[nodiscard]] math::Quat q_nb() const { return runtime::to_quat(att.get().q_nb()); }
+    [[nodiscard]] math::Vec3 v_n() const { return runtime::to_vec3(pos.get().v_n_mps()); }
     [[nodiscard]] NavState nav_state() const {
         return make_nav_state(air.get().tas_mps(), air.get().Hp_m(), pos.get().h_m(), v_n(), q_nb());
     }

@@ -83,12 +83,11 @@ public:
             const StartTruth* stp = nullptr;
             if (truth_ && truth_->available()) {
                 const auto& t = *static_cast<const msg::Truth*>(truth_->data_ptr());
-                const auto& q = t.q_nb();
-                st.q_nb = Quat(q[0], q[1], q[2], q[3]);
-                st.gyr_err_b_rps = v3(imu_.get().e_gyr_rps());
-                st.acc_err_b_mps2 = v3(imu_.get().e_acc_mps2());
-                st.mag_err_b_nT = v3(mag_.get().e_mag_nT());
-                st.b_dev_n_nT = v3(t.b_model_n_nT()) - v3(t.b_n_nT());
+                st.q_nb = to_quat(t.q_nb());
+                st.gyr_err_b_rps = to_vec3(imu_.get().e_gyr_rps());
+                st.acc_err_b_mps2 = to_vec3(imu_.get().e_acc_mps2());
+                st.mag_err_b_nT = to_vec3(mag_.get().e_mag_nT());
+                st.b_dev_n_nT = to_vec3(t.b_model_n_nT()) - to_vec3(t.b_n_nT());
                 stp = &st;
             }
             e = filter_.initialize(ctx.k, ctx.t_s, imu, mag, from_msg(air_.get()), from_msg(gnss_.get()), stp);
@@ -140,7 +139,7 @@ public:
         } else {
             if (!gnss.fix_valid) return;  // wait for the first fix
             StartTruth st;
-            st.acc_err_b_mps2 = v3(imu_.get().e_acc_mps2());
+            st.acc_err_b_mps2 = to_vec3(imu_.get().e_acc_mps2());
             e = filter_.initialize(ctx.k, ctx.t_s, imu, gnss, air, att, &st);
         }
         if (e.gnss_lost_event)
@@ -159,17 +158,13 @@ private:
     bool publisher_dead_{false};
 };
 
-template <class C>
-runtime::ComponentRegistry::Factory factory() {
-    return [](const std::string& n) { return std::make_unique<C>(n); };
-}
 
 }  // namespace
 
 void register_nav_components(runtime::ComponentRegistry& reg) {
-    reg.add("nav_air", "air data filter: AirSample + AtmSample -> AirDataEstimate", factory<NavAir>());
-    reg.add("nav_att", "attitude filter: IMU + magnetometer (+ p_n of k-1) -> AttitudeEstimate", factory<NavAtt>());
-    reg.add("nav_pos", "position filter, GNSS-aided then GNSS-denied -> PositionEstimate", factory<NavPos>());
+    reg.add("nav_air", "air data filter: AirSample + AtmSample -> AirDataEstimate", runtime::make_factory<NavAir>());
+    reg.add("nav_att", "attitude filter: IMU + magnetometer (+ p_n of k-1) -> AttitudeEstimate", runtime::make_factory<NavAtt>());
+    reg.add("nav_pos", "position filter, GNSS-aided then GNSS-denied -> PositionEstimate", runtime::make_factory<NavPos>());
 }
 
 }  // namespace gdnav::nav

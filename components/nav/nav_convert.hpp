@@ -2,18 +2,20 @@
 // Copies between the IDL topics (gdnav::msg) and the navigation models' plain structs (gdnav::nav).
 #include "model/nav_types.hpp"
 #include "runtime/messages.hpp"
+#include "runtime/msg_eigen.hpp"
 
 namespace gdnav::nav {
 
-inline Vec3 v3(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
-inline std::array<double, 3> a3(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+using runtime::to_array;
+using runtime::to_quat;
+using runtime::to_vec3;
 
-inline ImuSample from_msg(const msg::ImuSample& m) { return {v3(m.f_b_mps2()), v3(m.w_b_rps())}; }
-inline MagSample from_msg(const msg::MagSample& m) { return {v3(m.b_b_nT())}; }
+inline ImuSample from_msg(const msg::ImuSample& m) { return {to_vec3(m.f_b_mps2()), to_vec3(m.w_b_rps())}; }
+inline MagSample from_msg(const msg::MagSample& m) { return {to_vec3(m.b_b_nT())}; }
 inline AirSample from_msg(const msg::AirSample& m) { return {m.tas_mps(), m.aoa_rad(), m.aos_rad()}; }
 inline AtmSample from_msg(const msg::AtmSample& m) { return {m.p_Pa(), m.T_K()}; }
 inline GnssSample from_msg(const msg::GnssSample& m) {
-    return {m.fix_valid(), m.lon_rad(), m.lat_rad(), m.h_m(), v3(m.v_n_mps())};
+    return {m.fix_valid(), m.lon_rad(), m.lat_rad(), m.h_m(), to_vec3(m.v_n_mps())};
 }
 
 AirDataEstimate from_msg(const msg::AirDataEstimate& m);

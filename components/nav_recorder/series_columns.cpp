@@ -1,5 +1,7 @@
 #include "series_columns.hpp"
 
+#include "runtime/msg_eigen.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -8,9 +10,6 @@ namespace gdnav::nav_recorder {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-math::Quat quat(const std::array<double, 4>& q) { return {q[0], q[1], q[2], q[3]}; }
-math::Vec3 vec(const std::array<double, 3>& v) { return {v[0], v[1], v[2]}; }
 
 // Offsets from the origin with the origin's radii (and the given altitude).
 void offsets(double lat, double lon, double h, const Origin& o, double& north, double& east) {
@@ -43,8 +42,8 @@ metrics::NavState truth_state(const msg::Truth& t) {
     s.lat_rad = t.lat_rad();
     s.lon_rad = t.lon_rad();
     s.h_m = t.h_m();
-    s.v_n_mps = vec(t.v_n_mps());
-    s.q_nb = quat(t.q_nb());
+    s.v_n_mps = runtime::to_vec3(t.v_n_mps());
+    s.q_nb = runtime::to_quat(t.q_nb());
     s.tas_mps = t.tas_mps();
     s.aoa_rad = t.aoa_rad();
     s.aos_rad = t.aos_rad();
@@ -58,8 +57,8 @@ metrics::NavState estimate_state(const msg::AirDataEstimate& a, const msg::Attit
     s.lat_rad = p.lat_rad();
     s.lon_rad = p.lon_rad();
     s.h_m = p.h_m();
-    s.v_n_mps = vec(p.v_n_mps());
-    s.q_nb = quat(q.q_nb());
+    s.v_n_mps = runtime::to_vec3(p.v_n_mps());
+    s.q_nb = runtime::to_quat(q.q_nb());
     s.tas_mps = a.tas_mps();
     s.aoa_rad = a.aoa_rad();
     s.aos_rad = a.aos_rad();
@@ -102,7 +101,7 @@ void fill_estimate_row(double* r, double t_s, const msg::AirDataEstimate* a, con
         offsets(p->lat_rad(), p->lon_rad(), h_true_m, o, r[21], r[22]);
     }
     if (q) {
-        const math::Euler e = math::euler_from_quat(quat(q->q_nb()));
+        const math::Euler e = math::euler_from_quat(runtime::to_quat(q->q_nb()));
         r[7] = e.yaw_rad;
         r[8] = e.pitch_rad;
         r[9] = e.bank_rad;

@@ -1,6 +1,7 @@
 #include "sensor_components.hpp"
 
 #include "runtime/messages.hpp"
+#include "runtime/msg_eigen.hpp"
 #include "runtime/run_config.hpp"
 #include "sensors/model/air_data.hpp"
 #include "sensors/model/gnss.hpp"
@@ -16,8 +17,8 @@ namespace topics = gdnav::topics;
 
 namespace {
 
-math::Vec3 vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
-void put(std::array<double, 3>& a, const math::Vec3& v) { a = {v.x(), v.y(), v.z()}; }
+using runtime::to_array;
+using runtime::to_vec3;
 
 // Loads the suite named in the component section and applies the run's timing and the section's overrides.
 SensorSuiteParams load_suite(const config::Config& cfg, const runtime::RunInfo& run) {
@@ -52,12 +53,12 @@ public:
     }
     void step(const runtime::StepContext& ctx) override {
         const auto& t = truth_.get();
-        InertialTruth in{vec(t.f_ib_b_mps2()), vec(t.w_ib_b_rps()), vec(t.dw_ib_b_rps2()), t.mass_kg()};
+        InertialTruth in{to_vec3(t.f_ib_b_mps2()), to_vec3(t.w_ib_b_rps()), to_vec3(t.dw_ib_b_rps2()), t.mass_kg()};
         const ImuMeasurement m = model_.measure(ctx.k, ctx.t_s, in);
-        put(out_.value().f_b_mps2(), m.f_b_mps2);
-        put(out_.value().w_b_rps(), m.w_b_rps);
-        put(out_.value().e_gyr_rps(), m.e_gyr_rps);
-        put(out_.value().e_acc_mps2(), m.e_acc_mps2);
+        out_.value().f_b_mps2() = to_array(m.f_b_mps2);
+        out_.value().w_b_rps() = to_array(m.w_b_rps);
+        out_.value().e_gyr_rps() = to_array(m.e_gyr_rps);
+        out_.value().e_acc_mps2() = to_array(m.e_acc_mps2);
     }
 
 private:
@@ -76,11 +77,10 @@ public:
     }
     void step(const runtime::StepContext& ctx) override {
         const auto& t = truth_.get();
-        const auto& q = t.q_nb();
-        MagTruth in{math::Quat(q[0], q[1], q[2], q[3]), vec(t.b_n_nT())};
+        MagTruth in{runtime::to_quat(t.q_nb()), to_vec3(t.b_n_nT())};
         const MagMeasurement m = model_.measure(ctx.k, ctx.t_s, in);
-        put(out_.value().b_b_nT(), m.b_b_nT);
-        put(out_.value().e_mag_nT(), m.e_mag_nT);
+        out_.value().b_b_nT() = to_array(m.b_b_nT);
+        out_.value().e_mag_nT() = to_array(m.e_mag_nT);
     }
 
 private:
@@ -145,13 +145,13 @@ public:
     void step(const runtime::StepContext& ctx) override {
         const auto& t = truth_.get();
         const GnssMeasurement m =
-            model_.measure(ctx.k, ctx.t_s, {t.lon_rad(), t.lat_rad(), t.h_m(), vec(t.v_n_mps())});
+            model_.measure(ctx.k, ctx.t_s, {t.lon_rad(), t.lat_rad(), t.h_m(), to_vec3(t.v_n_mps())});
         auto& o = out_.value();
         o.fix_valid(m.fix_valid);
         o.lon_rad(m.lon_rad);
         o.lat_rad(m.lat_rad);
         o.h_m(m.h_m);
-        put(o.v_n_mps(), m.v_n_mps);
+        o.v_n_mps() = to_array(m.v_n_mps);
     }
 
 private:
@@ -160,19 +160,15 @@ private:
     GnssReceiver model_;
 };
 
-template <class C>
-runtime::ComponentRegistry::Factory factory() {
-    return [](const std::string& n) { return std::make_unique<C>(n); };
-}
 
 }  // namespace
 
 void register_sensor_components(runtime::ComponentRegistry& reg) {
-    reg.add("sensors_inertial", "gyroscopes + accelerometers: Truth -> ImuSample", factory<InertialComponent>());
-    reg.add("sensors_magnetic", "magnetometers: Truth -> MagSample", factory<MagneticComponent>());
-    reg.add("sensors_air", "Pitot TAS + AOA/AOS vanes: Truth -> AirSample", factory<AirComponent>());
-    reg.add("sensors_atmospheric", "barometer + thermometer: Truth -> AtmSample", factory<AtmosphericComponent>());
-    reg.add("sensors_gnss", "GNSS receiver, 1 Hz fixes until t_GNSS: Truth -> GnssSample", factory<GnssComponent>());
+    reg.add("sensors_inertial", "gyroscopes + accelerometers: Truth -> ImuSample", runtime::make_factory<InertialComponent>());
+    reg.add("sensors_magnetic", "magnetometers: Truth -> MagSample", runtime::make_factory<MagneticComponent>());
+    reg.add("sensors_air", "Pitot TAS + AOA/AOS vanes: Truth -> AirSample", runtime::make_factory<AirComponent>());
+    reg.add("sensors_atmospheric", "barometer + thermometer: Truth -> AtmSample", runtime::make_factory<AtmosphericComponent>());
+    reg.add("sensors_gnss", "GNSS receiver, 1 Hz fixes until t_GNSS: Truth -> GnssSample", runtime::make_factory<GnssComponent>());
 }
 
 }  // namespace gdnav::sensors

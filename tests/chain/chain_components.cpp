@@ -100,18 +100,14 @@ private:
     double kp_{0}, kd_{0}, target_{0};
 };
 
-template <class C>
-runtime::ComponentRegistry::Factory factory() {
-    return [](const std::string& n) { return std::make_unique<C>(n); };
-}
 
 }  // namespace
 
 void register_chain(runtime::ComponentRegistry& reg) {
-    reg.add("chain_plant", "test chain: double integrator with random disturbance", factory<Plant>());
-    reg.add("chain_sensor", "test chain: noisy position sensor", factory<Sensor>());
-    reg.add("chain_filter", "test chain: alpha-beta filter", factory<Filter>());
-    reg.add("chain_controller", "test chain: PD controller", factory<Controller>());
+    reg.add("chain_plant", "test chain: double integrator with random disturbance", runtime::make_factory<Plant>());
+    reg.add("chain_sensor", "test chain: noisy position sensor", runtime::make_factory<Sensor>());
+    reg.add("chain_filter", "test chain: alpha-beta filter", runtime::make_factory<Filter>());
+    reg.add("chain_controller", "test chain: PD controller", runtime::make_factory<Controller>());
     runtime::register_topic<ChainState>(kState);
     runtime::register_topic<ChainMeas>(kMeas);
     runtime::register_topic<ChainEstimate>(kEstimate);
