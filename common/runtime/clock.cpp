@@ -153,6 +153,8 @@ struct Clock::Impl {
                 m.outputs = status_in.outputs().to_string();
                 m.free = m.free || status_in.free_running();
                 spdlog::debug("member '{}' present on {}", name, m.host);
+                if (m.free && m.expected)
+                    spdlog::info("member '{}' is free-running (not in the barrier; run not reproducible)", name);
             }
             if (status_in.kind() == msg::STATUS_READY) m.ready = true;
             if (status_in.kind() == msg::STATUS_MODE)

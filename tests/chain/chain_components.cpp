@@ -44,6 +44,7 @@ public:
         stream_ = s;
     }
     void step(const runtime::StepContext&) override {
+        if (!in_.available()) return;  // free-running before the first state sample arrives
         out_.value().y_m(in_.get().x_m() + sigma_ * stream_.normal());
     }
 
