@@ -35,6 +35,8 @@ void RunMetrics::add_ground_speed(double t_s, double dt_s, double v_mps) {
 void RunMetrics::add_errors(double t_s, double dt_s, const NavErrors& e) {
     if (t_s < t_start_s_ - 0.5 * dt_s) return;
     for (const auto& info : kSignals) stats_[index(info.signal)].add(signal_value(e, info.signal));
+    if (t_s >= t_att_trend_s_ - 0.5 * dt_s) att_trend_.add(t_s, e.rot_rad);
+    if (t_s >= t_gnss_s_ - 0.5 * dt_s) hor_trend_.add(t_s, e.hor_m);
     t_last_s_ = t_s;
 }
 

@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "metrics/nav_errors.hpp"
+#include "metrics/linear_trend.hpp"
 #include "metrics/running_stats.hpp"
 
 namespace gdnav::metrics {
@@ -62,7 +63,9 @@ double signal_value(const NavErrors& e, Signal s);
 class RunMetrics {
 public:
     RunMetrics() = default;
-    RunMetrics(double t_gnss_s, double t_start_s = 0.0) : t_gnss_s_(t_gnss_s), t_start_s_(t_start_s) {}
+    // Trends: the attitude error angle (rot) from t_att_trend_s on (drift), the horizontal error from t_GNSS on.
+    RunMetrics(double t_gnss_s, double t_start_s = 0.0, double t_att_trend_s = 500.0)
+        : t_gnss_s_(t_gnss_s), t_start_s_(t_start_s), t_att_trend_s_(t_att_trend_s) {}
 
     // Ground speed for the distance since t_GNSS (call at every step, also before t_start and without estimates).
     void add_ground_speed(double t_s, double dt_s, double ground_speed_mps);
@@ -73,13 +76,20 @@ public:
     [[nodiscard]] double distance_since_gnss_m() const { return distance_m_; }
     [[nodiscard]] double t_gnss_s() const { return t_gnss_s_; }
     [[nodiscard]] double t_last_s() const { return t_last_s_; }
+    [[nodiscard]] double t_att_trend_s() const { return t_att_trend_s_; }
+    // Least-squares lines: attitude error angle [rad] vs t for t >= t_att_trend; horizontal error [m] vs t for
+    // t >= t_GNSS.
+    [[nodiscard]] const LinearTrend& att_trend() const { return att_trend_; }
+    [[nodiscard]] const LinearTrend& hor_trend() const { return hor_trend_; }
     // 100 * final error / D (NaN when D == 0).
     [[nodiscard]] double final_percent(Signal s) const;
 
 private:
     std::array<RunningStats, kSignalCount> stats_{};
+    LinearTrend att_trend_{}, hor_trend_{};
     double t_gnss_s_{100.0};
     double t_start_s_{0.0};
+    double t_att_trend_s_{500.0};
     double distance_m_{0.0};
     double prev_speed_mps_{0.0};
     double prev_t_s_{0.0};

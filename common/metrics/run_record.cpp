@@ -34,6 +34,10 @@ RunRecord make_run_record(const RunMetrics& m, bool complete, std::uint64_t seed
     r.hor_pct = m.final_percent(Signal::hor);
     r.cross_pct = m.final_percent(Signal::cross);
     r.along_pct = m.final_percent(Signal::along);
+    r.att_trend_from_s = m.t_att_trend_s();
+    r.att_slope_rad_per_s = m.att_trend().slope();
+    r.hor_slope_mps = m.hor_trend().slope();
+    r.hor_r2 = m.hor_trend().r2();
     for (const auto& info : kSignals) {
         const RunningStats& s = m.stats(info.signal);
         r.signals[index(info.signal)] = {s.mean(), s.std(), s.smax(), s.last()};
@@ -51,6 +55,8 @@ std::string to_yaml(const RunRecord& r) {
     o << "distance_since_gnss_m: " << d(r.distance_m) << "\n";
     o << "final_percent: {hor: " << d(r.hor_pct) << ", cross: " << d(r.cross_pct) << ", along: " << d(r.along_pct)
       << "}\n";
+    o << "trends: {att_from_s: " << d(r.att_trend_from_s) << ", att_slope_rad_per_s: " << d(r.att_slope_rad_per_s)
+      << ", hor_slope_mps: " << d(r.hor_slope_mps) << ", hor_r2: " << d(r.hor_r2) << "}\n";
     o << "signals:\n";
     for (const auto& info : kSignals) {
         const SignalSummary& s = r.signals[index(info.signal)];
@@ -97,6 +103,15 @@ RunRecord read_run_record(const fs::path& file) {
     r.hor_pct = read_double(pct, "hor");
     r.cross_pct = read_double(pct, "cross");
     r.along_pct = read_double(pct, "along");
+    constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+    r.att_trend_from_s = r.att_slope_rad_per_s = r.hor_slope_mps = r.hor_r2 = kNaN;
+    if (c.has("trends")) {
+        const config::Config tr = c.child("trends");
+        r.att_trend_from_s = read_double(tr, "att_from_s");
+        r.att_slope_rad_per_s = read_double(tr, "att_slope_rad_per_s");
+        r.hor_slope_mps = read_double(tr, "hor_slope_mps");
+        r.hor_r2 = read_double(tr, "hor_r2");
+    }
     const config::Config sig = c.child("signals");
     for (const auto& info : kSignals) {
         const config::Config s = sig.child(info.key);

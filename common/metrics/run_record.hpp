@@ -43,6 +43,12 @@ struct RunRecord {
     double hor_pct{0.0};
     double cross_pct{0.0};
     double along_pct{0.0};
+    // Trends (NaN when absent, e.g. in records written before they existed): slope of the attitude error angle
+    // after t_att_trend_s [rad/s], slope [m/s] and r2 of the horizontal error after t_GNSS.
+    double att_trend_from_s{0.0};
+    double att_slope_rad_per_s{0.0};
+    double hor_slope_mps{0.0};
+    double hor_r2{0.0};
     std::array<SignalSummary, kSignalCount> signals{};
     [[nodiscard]] const SignalSummary& operator[](Signal s) const { return signals[index(s)]; }
 };

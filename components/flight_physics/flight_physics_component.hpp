@@ -9,7 +9,8 @@
 //   magnetic_model: earth/magnetic_wisconsin.yaml
 //   initial: {lat_deg: 45, lon_deg: -90, mass_kg: 19.5, tas_mps: 29, Hp_m: 2700, bearing_deg: -72}
 //            # or `mission: missions/x.yaml` instead of tas/Hp/bearing: the mission's first operation's values
-//   turbulence: {factor: 0.5, probability_of_exceedance: 0.01, scale_length_m: 533.4}
+//   turbulence: {factor: 0.5, intensity_mps: 0.5858 | probability_of_exceedance: 0.01, scale_length_m: 533.4,
+//                noise_time_constant_s: 0.05}
 //   wind: {t_ini_s, t_end_s, speed_ini_mps, bearing_ini_deg, speed_end_mps, bearing_end_deg}       (optional)
 //   offsets: {dT_ini_K, dT_end_K, t_ini_dT_s, t_end_dT_s, dp_ini_Pa, dp_end_Pa, t_ini_dp_s, t_end_dp_s} (optional)
 //   earth_truth: {dg_mps2, tilt_deg, tilt_axis_bearing_deg, mag_dev_n_nT: [N, E, D]}                 (optional)

@@ -23,7 +23,7 @@ config::Config load_section(const config::Config& cfg, const char* key, const ch
 
 std::optional<InitMode> init_override(const config::Config& cfg) {
     if (!cfg.has("init_mode")) return std::nullopt;
-    return cfg.get_choice("init_mode", {"measurements", "reference"}) == "reference" ? InitMode::kReference
+    return cfg.get_choice("init_mode", {"measurements", "alignment"}) == "alignment" ? InitMode::kAlignment
                                                                                       : InitMode::kMeasurements;
 }
 
@@ -65,9 +65,6 @@ public:
             t.init_mode = *m;
             filter_.configure(t, stream.child("filter"));
         }
-        if (filter_.tuning().init_mode == InitMode::kReference)
-            truth_ = std::make_unique<runtime::InputBase>(*this, topics::kTruth, Lag::Same,
-                                                          runtime::message_ops<msg::Truth>());
     }
     void step(const runtime::StepContext& ctx) override {
         if (!imu_.available() || !mag_.available()) return;
@@ -79,18 +76,8 @@ public:
             e = filter_.step(ctx.k, ctx.t_s, imu, mag, last_pos_);
         } else {
             if (!air_.available() || !gnss_.available() || !gnss_.get().fix_valid()) return;  // wait for a fix
-            StartTruth st;
-            const StartTruth* stp = nullptr;
-            if (truth_ && truth_->available()) {
-                const auto& t = *static_cast<const msg::Truth*>(truth_->data_ptr());
-                st.q_nb = to_quat(t.q_nb());
-                st.gyr_err_b_rps = to_vec3(imu_.get().e_gyr_rps());
-                st.acc_err_b_mps2 = to_vec3(imu_.get().e_acc_mps2());
-                st.mag_err_b_nT = to_vec3(mag_.get().e_mag_nT());
-                st.b_dev_n_nT = to_vec3(t.b_model_n_nT()) - to_vec3(t.b_n_nT());
-                stp = &st;
-            }
-            e = filter_.initialize(ctx.k, ctx.t_s, imu, mag, from_msg(air_.get()), from_msg(gnss_.get()), stp);
+            const Alignment align = alignment_from_msg(imu_.get(), &mag_.get());
+            e = filter_.initialize(ctx.k, ctx.t_s, imu, mag, from_msg(air_.get()), from_msg(gnss_.get()), &align);
         }
         to_msg(e, out_.value());
     }
@@ -102,7 +89,6 @@ private:
     Input<msg::GnssSample> gnss_{*this, topics::kGnss};
     Input<msg::PositionEstimate> pos_prev_{*this, topics::kPosition, Lag::Previous};
     Output<msg::AttitudeEstimate> out_{*this, topics::kAttitude};
-    std::unique_ptr<runtime::InputBase> truth_;
     AttitudeFilter filter_;
     PositionEstimate last_pos_;
 };
@@ -138,9 +124,8 @@ public:
             e = filter_.step(ctx.k, ctx.t_s, imu, gnss, air, att);
         } else {
             if (!gnss.fix_valid) return;  // wait for the first fix
-            StartTruth st;
-            st.acc_err_b_mps2 = to_vec3(imu_.get().e_acc_mps2());
-            e = filter_.initialize(ctx.k, ctx.t_s, imu, gnss, air, att, &st);
+            const Alignment align = alignment_from_msg(imu_.get());  // E_acc only
+            e = filter_.initialize(ctx.k, ctx.t_s, imu, gnss, air, att, &align);
         }
         if (e.gnss_lost_event)
             publish_status(publisher_dead_ ? "GNSS lost: the GNSS publisher was declared dead"

@@ -5,9 +5,9 @@
 //            (+ AirDataEstimate and GnssSample of step 0 for its initialisation)
 //   nav_pos  ImuSample + GnssSample + AirDataEstimate + AttitudeEstimate (k) -> PositionEstimate (k)
 // Config sections: `tuning: nav/tuning.yaml`, `variant: nav/variants/baseline.yaml` (relative to config/), and
-// optionally `init_mode: measurements | reference` (overrides the tuning file). In reference mode the filters start
-// like the reference's fine alignment (models-nav.md §6): true attitude (Truth of step 0, nav_att only) and the
-// sensors' calibration errors (ImuSample/MagSample e_* fields of step 0) with the reference's small random errors.
+// optionally `init_mode: measurements | alignment` (overrides the tuning file). In alignment mode the filters start
+// from the pre-flight fine alignment the sensors publish with their samples (ImuSample / MagSample align_*: attitude,
+// E_gyr, E_acc, E_mag, B_dev and their sigmas; models-nav.md §6). No navigation component reads the truth.
 // nav_pos enters GNSS-denied mode when no valid fix arrived for 1.5 s of simulated time or at the step the clock
 // declares the GNSS publisher dead, and publishes "GNSS lost" on ComponentStatus.
 #include "runtime/registry.hpp"

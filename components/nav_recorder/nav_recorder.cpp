@@ -57,7 +57,8 @@ public:
     void configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream&) override {
         run_ = run;
         const double t_gnss = cfg.get_double("t_gnss_s", 100.0, Range{-1e6, 1e7});
-        metrics_ = metrics::RunMetrics(t_gnss, cfg.get_double("metrics_start_s", 0.0, Range{-1e6, 1e7}));
+        const double t_start = cfg.get_double("metrics_start_s", 0.0, Range{-1e6, 1e7});
+        metrics_ = metrics::RunMetrics(t_gnss, t_start, cfg.get_double("attitude_trend_from_s", 500.0, Range{-1e6, 1e7}));
         decimation_ = static_cast<std::uint64_t>(cfg.get_int("decimation", 10, 1, 1'000'000));
         flush_rows_ = static_cast<std::size_t>(cfg.get_int("flush_rows", 600, 1, 1'000'000));
         compression_ = static_cast<int>(cfg.get_int("compression", 4, 0, 9));

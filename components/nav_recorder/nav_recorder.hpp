@@ -25,6 +25,7 @@
 //   compression: 4       # deflate level 0..9 (0 = none)
 //   gnss_track: true     # record the GNSS fixes (needs a GnssSample producer)
 //   metrics_start_s: 0   # start of the metrics window
+//   attitude_trend_from_s: 500   # start of the attitude-drift fit (metrics.yaml trends; docs/montecarlo.md)
 #include "runtime/registry.hpp"
 
 namespace gdnav::nav_recorder {

@@ -4,6 +4,7 @@
 #include "runtime/msg_eigen.hpp"
 #include "runtime/run_config.hpp"
 #include "sensors/model/air_data.hpp"
+#include "sensors/model/alignment.hpp"
 #include "sensors/model/gnss.hpp"
 #include "sensors/model/inertial.hpp"
 #include "sensors/model/magnetic.hpp"
@@ -50,21 +51,37 @@ public:
         override_grade(cfg, "acc_grade", "accelerometers", s.inertial.acc, s.acc_grade, parse_acc_grade);
         s.inertial.bias_drift_band = cfg.get_double("bias_drift_band", s.inertial.bias_drift_band, {1.0, 1e6});
         model_.configure(s.inertial, stream);
+        align_errors_ = s.alignment;
+        align_stream_ = stream.child("alignment");
+        aligned_ = false;
     }
     void step(const runtime::StepContext& ctx) override {
         const auto& t = truth_.get();
         InertialTruth in{to_vec3(t.f_ib_b_mps2()), to_vec3(t.w_ib_b_rps()), to_vec3(t.dw_ib_b_rps2()), t.mass_kg()};
         const ImuMeasurement m = model_.measure(ctx.k, ctx.t_s, in);
-        out_.value().f_b_mps2() = to_array(m.f_b_mps2);
-        out_.value().w_b_rps() = to_array(m.w_b_rps);
-        out_.value().e_gyr_rps() = to_array(m.e_gyr_rps);
-        out_.value().e_acc_mps2() = to_array(m.e_acc_mps2);
+        msg::ImuSample& o = out_.value();
+        o.f_b_mps2() = to_array(m.f_b_mps2);
+        o.w_b_rps() = to_array(m.w_b_rps);
+        if (!aligned_) {  // the fine alignment ends at the first step (t0) and is published with every sample
+            const ImuAlignment a =
+                align_imu(align_errors_, runtime::to_quat(t.q_nb()), m.e_gyr_rps, m.e_acc_mps2, align_stream_);
+            o.align_q_nb() = runtime::to_array(a.q_nb);
+            o.align_att_sigma_rad(a.att_sigma_rad);
+            o.align_gyr_err_rps() = to_array(a.gyr_err_rps);
+            o.align_gyr_err_sigma_rps() = to_array(a.gyr_err_sigma_rps);
+            o.align_acc_err_mps2() = to_array(a.acc_err_mps2);
+            o.align_acc_err_sigma_mps2() = to_array(a.acc_err_sigma_mps2);
+            aligned_ = true;
+        }
     }
 
 private:
     Input<msg::Truth> truth_{*this, topics::kTruth};
     Output<msg::ImuSample> out_{*this, topics::kImu};
     InertialSensors model_;
+    AlignmentErrors align_errors_;
+    rnd::Stream align_stream_;
+    bool aligned_{false};
 };
 
 class MagneticComponent final : public runtime::Component {
@@ -74,19 +91,34 @@ public:
         SensorSuiteParams s = load_suite(cfg, run);
         override_grade(cfg, "grade", "magnetometers", s.mag.grade, s.mag_grade, parse_mag_grade);
         model_.configure(s.mag, stream);
+        align_errors_ = s.alignment;
+        align_stream_ = stream.child("alignment");
+        aligned_ = false;
     }
     void step(const runtime::StepContext& ctx) override {
         const auto& t = truth_.get();
         MagTruth in{runtime::to_quat(t.q_nb()), to_vec3(t.b_n_nT())};
         const MagMeasurement m = model_.measure(ctx.k, ctx.t_s, in);
-        out_.value().b_b_nT() = to_array(m.b_b_nT);
-        out_.value().e_mag_nT() = to_array(m.e_mag_nT);
+        msg::MagSample& o = out_.value();
+        o.b_b_nT() = to_array(m.b_b_nT);
+        if (!aligned_) {  // calibration and magnetic survey at t0, published with every sample
+            const MagAlignment a =
+                align_mag(align_errors_, m.e_mag_nT, to_vec3(t.b_model_n_nT()) - to_vec3(t.b_n_nT()), align_stream_);
+            o.align_mag_err_nT() = to_array(a.mag_err_nT);
+            o.align_mag_err_sigma_nT() = to_array(a.mag_err_sigma_nT);
+            o.align_b_dev_n_nT() = to_array(a.b_dev_n_nT);
+            o.align_b_dev_sigma_nT() = to_array(a.b_dev_sigma_nT);
+            aligned_ = true;
+        }
     }
 
 private:
     Input<msg::Truth> truth_{*this, topics::kTruth};
     Output<msg::MagSample> out_{*this, topics::kMag};
     Magnetometers model_;
+    AlignmentErrors align_errors_;
+    rnd::Stream align_stream_;
+    bool aligned_{false};
 };
 
 class AirComponent final : public runtime::Component {

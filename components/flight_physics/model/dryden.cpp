@@ -54,10 +54,21 @@ Eigen::Matrix<double, N, 1> draw_stationary(const TurbulenceAxisModel<N>& m, rnd
 }
 }  // namespace
 
+double reference_intensity_mps() {
+    return DrydenTurbulence::intensity_for(kReferenceUdotRms_mps2, kDefaultNoiseTimeConstant_s, kReferenceTas_mps,
+                                           kDefaultScaleLength_m);
+}
+
 TurbulenceParams TurbulenceParams::from_config(const config::Config& c) {
     TurbulenceParams p;
     p.factor = c.get_double("factor", p.factor, config::Range{0.0, 10.0});
-    p.prob_exceedance = c.get_double("probability_of_exceedance", p.prob_exceedance, config::Range{1e-3, 1e-1});
+    if (c.has("intensity_mps") && c.has("probability_of_exceedance"))
+        c.fail("probability_of_exceedance",
+               "give either intensity_mps (constant intensity) or probability_of_exceedance (MIL-F-8785C chart), "
+               "not both");
+    p.intensity_mps = c.get_double("intensity_mps", p.intensity_mps, config::Range{0.0, 10.0});
+    if (c.has("probability_of_exceedance"))
+        p.prob_exceedance = c.get_double("probability_of_exceedance", 1e-2, config::Range{1e-3, 1e-1});
     p.scale_length_m = c.get_double("scale_length_m", p.scale_length_m, config::Range{1.0, 1e5});
     p.noise_time_constant_s =
         c.get_double("noise_time_constant_s", p.noise_time_constant_s, config::Range{0.0, kMaxNoiseTau_s});
@@ -66,7 +77,8 @@ TurbulenceParams TurbulenceParams::from_config(const config::Config& c) {
 
 DrydenTurbulence::DrydenTurbulence(const TurbulenceParams& p, rnd::Stream stream) : p_(p), stream_(stream) {
     if (!(p.factor >= 0.0)) throw std::invalid_argument("DrydenTurbulence: factor must be >= 0");
-    if (!(p.prob_exceedance >= 1e-3 && p.prob_exceedance <= 1e-1))
+    if (!(p.intensity_mps >= 0.0)) throw std::invalid_argument("DrydenTurbulence: intensity must be >= 0");
+    if (p.prob_exceedance && !(*p.prob_exceedance >= 1e-3 && *p.prob_exceedance <= 1e-1))
         throw std::invalid_argument("DrydenTurbulence: probability of exceedance must be in [1e-3, 1e-1]");
     if (!(p.scale_length_m > 0.0)) throw std::invalid_argument("DrydenTurbulence: scale length must be > 0");
     if (!(p.noise_time_constant_s >= 0.0 && p.noise_time_constant_s <= kMaxNoiseTau_s))
@@ -93,13 +105,19 @@ double DrydenTurbulence::noise_time_constant_for(double udot_rms_mps2, double si
     return 2.0 * c / (t + std::sqrt(t * t + 4.0 * c));
 }
 
+double DrydenTurbulence::intensity_for(double udot_rms_mps2, double tau_s, double tas_mps, double scale_length_m) {
+    if (!(udot_rms_mps2 > 0.0 && tau_s > 0.0 && tas_mps > 0.0 && scale_length_m > 0.0))
+        throw std::invalid_argument("DrydenTurbulence::intensity_for: arguments must be > 0");
+    return udot_rms_mps2 * std::sqrt(tau_s * (scale_length_m / tas_mps + tau_s));
+}
+
 void DrydenTurbulence::set_conditions(double tas_mps, double h_m, double dt_s) {
     if (!active()) return;
     const double v = std::max(tas_mps, kMinTas_mps);
     const double a = v / p_.scale_length_m;  // 1 / T
     const double x = a * dt_s;
     const double e = std::exp(-x);
-    sigma_ = p_.factor * sigma_mps(h_m, p_.prob_exceedance);
+    sigma_ = p_.factor * (p_.prob_exceedance ? sigma_mps(h_m, *p_.prob_exceedance) : p_.intensity_mps);
     // Noise: f+ = b f + sqrt(1 - b^2) nu; zero-frequency PSD of the sampled f: q = dt (1 + b) / (1 - b) (= dt for
     // white f, ~2 tau for tau >> dt). The forming-filter gains below use it so that the discrete model's
     // low-frequency spectrum is the continuous Dryden one.

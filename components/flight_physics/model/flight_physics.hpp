@@ -26,7 +26,7 @@ namespace gdnav::physics {
 struct EnvironmentParams {
     WindRampParams wind{};             // default: no wind
     atm::OffsetsRampParams offsets{};  // default: ISA
-    TurbulenceParams turbulence{};     // default: factor 0.5, P = 1e-2
+    TurbulenceParams turbulence{};     // default: factor 0.5, calibrated constant intensity (dryden.hpp)
     earth::EarthTruthParams earth{};   // default: true = model fields
     earth::MagneticModel magnetic{};   // e.g. MagneticModel::load("config/earth/magnetic_wisconsin.yaml")
 };

@@ -1,6 +1,6 @@
 #pragma once
 // Cost of one 10-ms physics tick (FlightPhysics::advance with 5 Heun sub-steps), for `gdnav bench`.
-// Runs the Mugin trimmed at 29 m/s, Hp 2700 m, with Dryden turbulence (factor 0.5, P = 1e-2), a 5 m/s wind and
+// Runs the Mugin trimmed at 29 m/s, Hp 2700 m, with Dryden turbulence (factor 0.5, default intensity), a 5 m/s wind and
 // controls that change every second tick (as a 50-Hz controller would), and measures wall time (steady_clock).
 #include <filesystem>
 

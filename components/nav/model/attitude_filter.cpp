@@ -36,20 +36,14 @@ void AttitudeFilter::configure(const config::Config& tuning, const config::Confi
     t.r_diag.segment<3>(att::kYmag).setConstant(r.get_double("mag_nT2", Range::positive()));
     t.gyr_noise_var = tuning.get_double("gyr_noise_var_rad2ps2", Range::nonneg());
     const config::Config init = tuning.child("init");
-    t.init_mode = init.get_choice("mode", {"measurements", "reference"}) == "reference" ? InitMode::kReference
+    t.init_mode = init.get_choice("mode", {"measurements", "alignment"}) == "alignment" ? InitMode::kAlignment
                                                                                          : InitMode::kMeasurements;
     const config::Config im = init.child("measurements");
     t.init_sigmas.att_rad = im.get_angle_deg("att_sigma_deg", Range{0.0, 30.0});
     t.init_sigmas.gyr_bias_rps.setConstant(im.get_angle_deg("gyr_bias_sigma_dps", Range::nonneg()));
     t.init_sigmas.mag_bias_nT = im.get_vec3("mag_bias_sigma_nT", Range::nonneg());
     t.init_sigmas.b_dev_nT = im.get_vec3("b_dev_sigma_nT", Range::nonneg());
-    const config::Config ir = init.child("reference");
-    t.init_errors.att_sigma_rad = ir.get_angle_deg("att_error_sigma_deg", Range{0.0, 30.0});
-    t.init_errors.q_p0 = ir.get_double("q_p0", Range::positive());
-    t.init_errors.gyr_rel = ir.get_double("gyr_rel_error", Range{0.0, 1.0});
-    t.init_errors.mag_rel = ir.get_double("mag_rel_error", Range{0.0, 1.0});
-    t.init_errors.b_dev_rel = ir.get_double("b_dev_rel_error", Range{0.0, 1.0});
-    t.init_errors.normalise_error_axis = ir.get_bool("normalise_error_axis");
+    t.align_q_p0 = init.child("alignment").get_double("q_p0", Range{0.0, 1.0});
     t.model = parse_specific_force_model(variant);
     tuning.finish();
     variant.finish();
@@ -64,20 +58,23 @@ void AttitudeFilter::configure(const Tuning& tuning, rnd::Stream stream) {
 
 AttitudeEstimate AttitudeFilter::initialize(std::uint64_t k, double t_s, const ImuSample& imu, const MagSample& mag,
                                             const AirDataEstimate& air, const GnssSample& gnss,
-                                            const StartTruth* truth) {
+                                            const Alignment* align) {
     AttitudeInit in;
-    if (tun_.init_mode == InitMode::kReference) {
-        if (truth == nullptr) throw std::invalid_argument("attitude init.mode reference needs the start truth");
-        rnd::Stream s = stream_.child("init");
-        const ReferenceInitErrors& e = tun_.init_errors;
-        in.q_nb = (draw_attitude_error(e.att_sigma_rad, e.normalise_error_axis, s) * truth->q_nb).normalized();
-        in.gyr_bias_rps = perturb_relative(truth->gyr_err_b_rps, e.gyr_rel, s);
-        in.mag_bias_nT = perturb_relative(truth->mag_err_b_nT, e.mag_rel, s);
-        in.b_dev_n_nT = perturb_relative(truth->b_dev_n_nT, e.b_dev_rel, s);
-        in.q_p0 = e.q_p0;
-        in.gyr_bias_sigma_rps = e.gyr_rel * truth->gyr_err_b_rps.cwiseAbs();
-        in.mag_bias_sigma_nT = e.mag_rel * truth->mag_err_b_nT.cwiseAbs();
-        in.b_dev_sigma_nT = e.b_dev_rel * truth->b_dev_n_nT.cwiseAbs();
+    if (tun_.init_mode == InitMode::kAlignment) {
+        if (align == nullptr || !align->valid())
+            throw std::invalid_argument("attitude init.mode alignment needs the alignment published by the sensors");
+        in.q_nb = align->q_nb.normalized();
+        in.gyr_bias_rps = align->gyr_err_rps;
+        in.mag_bias_nT = align->mag_err_nT;
+        in.b_dev_n_nT = align->b_dev_n_nT;
+        if (tun_.align_q_p0 > 0.0) {
+            in.q_p0 = tun_.align_q_p0;  // the reference's fixed (overconfident) P0
+        } else {
+            in.att_sigma_rad = align->att_sigma_rad;
+        }
+        in.gyr_bias_sigma_rps = align->gyr_err_sigma_rps;
+        in.mag_bias_sigma_nT = align->mag_err_sigma_nT;
+        in.b_dev_sigma_nT = align->b_dev_sigma_nT;
         in.w_nb_b_rps = imu.w_b_rps - in.gyr_bias_rps;  // Earth and transport rates ignored, as the reference
     } else {
         if (!gnss.fix_valid) throw std::invalid_argument("attitude init.mode measurements needs a valid GNSS fix");

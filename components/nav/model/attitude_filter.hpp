@@ -48,20 +48,22 @@ public:
         att::SpecificForceModel model{att::SpecificForceModel::kBaseline};
         InitMode init_mode{InitMode::kMeasurements};
         MeasurementInitSigmas init_sigmas;
-        ReferenceInitErrors init_errors;
+        double align_q_p0{1e-8};  // alignment mode: P0 per quaternion component (reference); 0: use the sigma
+
         double gyr_noise_var{5.63e-7};  // per-sample gyro white-noise variance, added to P0 of w_nb
     };
 
     // tuning: `attitude` section of config/nav/tuning.yaml; variant: `attitude` section of a variant file.
-    // The stream provides the reference-mode initial errors.
+    // The stream is kept for future random draws (the filter draws nothing today).
     void configure(const config::Config& tuning, const config::Config& variant, rnd::Stream stream);
     void configure(const Tuning& tuning, rnd::Stream stream);
 
     // Initialisation per `init.mode`. measurements: from the first IMU/mag samples, the air data estimate and the
-    // first GNSS fix (position for the model field and declination). reference: needs `truth` (throws otherwise).
+    // first GNSS fix (position for the model field and declination). alignment: needs the published alignment
+    // (throws otherwise).
     AttitudeEstimate initialize(std::uint64_t k, double t_s, const ImuSample& imu, const MagSample& mag,
                                 const AirDataEstimate& air, const GnssSample& gnss,
-                                const StartTruth* truth = nullptr);
+                                const Alignment* align = nullptr);
     AttitudeEstimate initialize(std::uint64_t k, double t_s, const AttitudeInit& init);
 
     AttitudeEstimate step(std::uint64_t k, double t_s, const ImuSample& imu, const MagSample& mag,

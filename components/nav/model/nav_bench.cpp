@@ -33,15 +33,15 @@ NavBenchResult bench_nav_filters(const config::Config& tuning, const config::Con
     std::vector<synth::Sample> data;
     data.reserve(static_cast<std::size_t>(n) + 1);
     for (int i = 0; i <= n; ++i) data.push_back(gen.next());
-    const StartTruth truth = gen.start_truth();
+    const Alignment align = gen.alignment(root.child("alignment"));
     const synth::Sample& s0 = data[0];
     std::vector<AirDataEstimate> as(data.size());
     std::vector<AttitudeEstimate> qs(data.size());
     std::vector<PositionEstimate> ps(data.size());
     auto init = [&]() {
         as[0] = air.initialize(0, 0.0, s0.air, s0.atm);
-        qs[0] = att.initialize(0, 0.0, s0.imu, s0.mag, as[0], s0.gnss, &truth);
-        ps[0] = pos.initialize(0, 0.0, s0.imu, s0.gnss, as[0], qs[0], &truth);
+        qs[0] = att.initialize(0, 0.0, s0.imu, s0.mag, as[0], s0.gnss, &align);
+        ps[0] = pos.initialize(0, 0.0, s0.imu, s0.gnss, as[0], qs[0], &align);
     };
     // Reference run of the whole chain (untimed): its outputs feed the per-filter timing loops below.
     init();

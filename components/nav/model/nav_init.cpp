@@ -15,18 +15,4 @@ Quat coarse_attitude(const Vec3& f_b, const Vec3& b_b, const Vec3& b_model_n) {
     return math::quat_from_euler({yaw, pitch, bank});
 }
 
-Quat draw_attitude_error(double sigma_rad, bool normalise_axis, rnd::Stream& stream) {
-    const double gamma = stream.normal(0.0, sigma_rad);
-    const double p1 = math::deg2rad(static_cast<double>(stream.uniform_int(-179, 180)));
-    const double p2 = math::deg2rad(0.5 * static_cast<double>(stream.uniform_int(-179, 180)));
-    Vec3 a(std::cos(p1) * std::cos(p2), std::sin(p2), std::sin(p1));
-    if (normalise_axis) a.normalize();
-    return math::quat_from_rotv(gamma * a);
-}
-
-Vec3 perturb_relative(const Vec3& truth, double rel, rnd::Stream& stream) {
-    const Vec3 nu = stream.normal3();
-    return truth.cwiseProduct(Vec3::Ones() + rel * nu);
-}
-
 }  // namespace gdnav::nav

@@ -1,5 +1,7 @@
 #include "nav_synthetic.hpp"
 
+#include "sensors/model/alignment.hpp"
+
 #include <cmath>
 
 #include "math/rotation.hpp"
@@ -21,14 +23,24 @@ double Hp_from_H(double hg, double dt, double dp) {
 Generator::Generator(const Scenario& sc, rnd::Stream stream)
     : sc_(sc), stream_(stream), lon_(sc.lon0_rad), lat_(sc.lat0_rad), h_(sc.h0_m) {}
 
-StartTruth Generator::start_truth() const {
-    StartTruth s;
-    s.q_nb = math::quat_from_euler({sc_.yaw0_rad, sc_.pitch_rad, sc_.bank_rad});
-    s.gyr_err_b_rps = sc_.gyr_err_b_rps;
-    s.acc_err_b_mps2 = sc_.acc_err_b_mps2;
-    s.mag_err_b_nT = sc_.mag_err_b_nT;
-    s.b_dev_n_nT = sc_.b_dev_n_nT;
-    return s;
+Alignment Generator::alignment(rnd::Stream stream, bool exact) const {
+    sensors::AlignmentErrors e;
+    if (exact) e = {0.0, true, 0.0, 0.0, 0.0, 0.0};
+    const Quat q = math::quat_from_euler({sc_.yaw0_rad, sc_.pitch_rad, sc_.bank_rad});
+    const sensors::ImuAlignment i = sensors::align_imu(e, q, sc_.gyr_err_b_rps, sc_.acc_err_b_mps2, stream);
+    const sensors::MagAlignment m = sensors::align_mag(e, sc_.mag_err_b_nT, sc_.b_dev_n_nT, stream);
+    Alignment a;
+    a.q_nb = i.q_nb;
+    a.att_sigma_rad = i.att_sigma_rad;
+    a.gyr_err_rps = i.gyr_err_rps;
+    a.gyr_err_sigma_rps = i.gyr_err_sigma_rps;
+    a.acc_err_mps2 = i.acc_err_mps2;
+    a.acc_err_sigma_mps2 = i.acc_err_sigma_mps2;
+    a.mag_err_nT = m.mag_err_nT;
+    a.mag_err_sigma_nT = m.mag_err_sigma_nT;
+    a.b_dev_n_nT = m.b_dev_n_nT;
+    a.b_dev_sigma_nT = m.b_dev_sigma_nT;
+    return a;
 }
 
 Sample Generator::next() {

@@ -75,7 +75,9 @@ public:
     // Sample of step k (call with k = 0, 1, 2, ... in order).
     Sample next();
     [[nodiscard]] const Scenario& scenario() const { return sc_; }
-    [[nodiscard]] StartTruth start_truth() const;
+    // The pre-flight alignment the sensors would publish for this scenario, with the reference's error model
+    // (sensors::AlignmentErrors defaults, drawn from `stream`); perfect when `exact`.
+    [[nodiscard]] Alignment alignment(rnd::Stream stream, bool exact = false) const;
 
 private:
     Scenario sc_;

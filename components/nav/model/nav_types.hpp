@@ -26,6 +26,17 @@ struct ImuSample {
 struct MagSample {
     Vec3 b_b_nT{Vec3::Zero()};
 };
+// Pre-flight fine alignment published with the IMU and magnetometer samples (ImuSample / MagSample align_*), used
+// by `init.mode: alignment` (nav_init.hpp). Estimates at t0 with their 1-sigma.
+struct Alignment {
+    Quat q_nb{0.0, 0.0, 0.0, 0.0};  // body -> NED; zero = no alignment published
+    double att_sigma_rad{0.0};
+    Vec3 gyr_err_rps{Vec3::Zero()}, gyr_err_sigma_rps{Vec3::Zero()};
+    Vec3 acc_err_mps2{Vec3::Zero()}, acc_err_sigma_mps2{Vec3::Zero()};
+    Vec3 mag_err_nT{Vec3::Zero()}, mag_err_sigma_nT{Vec3::Zero()};
+    Vec3 b_dev_n_nT{Vec3::Zero()}, b_dev_sigma_nT{Vec3::Zero()};
+    [[nodiscard]] bool valid() const { return q_nb.coeffs().norm() > 0.5; }
+};
 struct AirSample {
     double tas_mps{0.0};
     double aoa_rad{0.0};

@@ -41,10 +41,9 @@ void PositionFilter::configure(const config::Config& tuning, const config::Confi
     t.lowpass_time_constant_s = tuning.get_double("lowpass_time_constant_s", Range{0.0, 1000.0});
     t.gnss_loss_timeout_s = tuning.get_double("gnss_loss_timeout_s", Range{0.0, 60.0});
     const config::Config init = tuning.child("init");
-    t.init_mode = init.get_choice("mode", {"measurements", "reference"}) == "reference" ? InitMode::kReference
+    t.init_mode = init.get_choice("mode", {"measurements", "alignment"}) == "alignment" ? InitMode::kAlignment
                                                                                          : InitMode::kMeasurements;
     t.init_acc_bias_sigma_mps2 = init.child("measurements").get_double("acc_bias_sigma_mps2", Range::nonneg());
-    t.init_acc_rel_error = init.child("reference").get_double("acc_rel_error", Range{0.0, 1.0});
     t.horizontal = parse_horizontal_rule(variant);
     t.vertical = parse_vertical_rule(variant);
     tuning.finish();
@@ -61,12 +60,11 @@ void PositionFilter::configure(const Tuning& tuning, rnd::Stream stream) {
 
 PositionEstimate PositionFilter::initialize(std::uint64_t k, double t_s, const ImuSample& imu, const GnssSample& gnss,
                                             const AirDataEstimate& air, const AttitudeEstimate& att,
-                                            const StartTruth* truth) {
-    if (tun_.init_mode == InitMode::kReference) {
-        if (truth == nullptr) throw std::invalid_argument("position init.mode reference needs the start truth");
-        rnd::Stream s = stream_.child("init");
-        const Vec3 e0 = perturb_relative(truth->acc_err_b_mps2, tun_.init_acc_rel_error, s);
-        return initialize(k, t_s, imu, gnss, air, att, e0, tun_.init_acc_rel_error * truth->acc_err_b_mps2.cwiseAbs());
+                                            const Alignment* align) {
+    if (tun_.init_mode == InitMode::kAlignment) {
+        if (align == nullptr || !align->valid())
+            throw std::invalid_argument("position init.mode alignment needs the alignment published by the sensors");
+        return initialize(k, t_s, imu, gnss, air, att, align->acc_err_mps2, align->acc_err_sigma_mps2);
     }
     return initialize(k, t_s, imu, gnss, air, att, Vec3::Zero(), Vec3::Constant(tun_.init_acc_bias_sigma_mps2));
 }

@@ -48,21 +48,20 @@ public:
         double gnss_loss_timeout_s{1.5};
         InitMode init_mode{InitMode::kMeasurements};
         double init_acc_bias_sigma_mps2{0.157};  // measurements mode
-        double init_acc_rel_error{0.01};         // reference mode
         denied::HorizontalRule horizontal{denied::HorizontalRule::kFrozenWind};
         denied::VerticalRule vertical{denied::VerticalRule::kPressure};
     };
 
     // tuning: `position` section of config/nav/tuning.yaml; variant: `position` section of a variant file.
-    // The stream provides the reference-mode initial E_acc error.
+    // The stream is kept for future random draws (the filter draws nothing today).
     void configure(const config::Config& tuning, const config::Config& variant, rnd::Stream stream);
     void configure(const Tuning& tuning, rnd::Stream stream);
 
-    // Initialisation at the first valid GNSS fix (throws if gnss.fix_valid is false). init.mode reference needs
-    // `truth` (E_acc at t0).
+    // Initialisation at the first valid GNSS fix (throws if gnss.fix_valid is false). init.mode alignment needs
+    // the published alignment (E_acc at t0 and its sigma).
     PositionEstimate initialize(std::uint64_t k, double t_s, const ImuSample& imu, const GnssSample& gnss,
                                 const AirDataEstimate& air, const AttitudeEstimate& att,
-                                const StartTruth* truth = nullptr);
+                                const Alignment* align = nullptr);
     PositionEstimate initialize(std::uint64_t k, double t_s, const ImuSample& imu, const GnssSample& gnss,
                                 const AirDataEstimate& air, const AttitudeEstimate& att, const Vec3& acc_err0,
                                 const Vec3& acc_err_sigma0);

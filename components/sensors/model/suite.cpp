@@ -82,6 +82,7 @@ SensorSuiteParams parse_sensor_suite(const Config& cfg, const std::filesystem::p
     s.inertial.bias_drift_band = cfg.get_double("bias_drift_band", Range{40.0, 1.0e9});
     s.inertial.platform = parse_platform(cfg.child("platform"));
     s.inertial.dt_s = dt;
+    s.alignment = AlignmentErrors::from_config(cfg.child("alignment"));
 
     const Config mag = cfg.child("magnetometers");
     s.mag_grade = grade_name(mag);
@@ -148,6 +149,12 @@ std::vector<std::pair<std::string, double>> list_parameters(const SensorSuitePar
     vec("platform.cg_empty_m", p.cg_empty_m);
     out.emplace_back("platform.mass_full_kg", p.mass_full_kg);
     out.emplace_back("platform.mass_empty_kg", p.mass_empty_kg);
+    out.emplace_back("alignment.att_sigma_rad", s.alignment.att_sigma_rad);
+    out.emplace_back("alignment.normalise_error_axis", s.alignment.normalise_error_axis ? 1.0 : 0.0);
+    out.emplace_back("alignment.gyr_rel", s.alignment.gyr_rel);
+    out.emplace_back("alignment.acc_rel", s.alignment.acc_rel);
+    out.emplace_back("alignment.mag_rel", s.alignment.mag_rel);
+    out.emplace_back("alignment.b_dev_rel", s.alignment.b_dev_rel);
     out.emplace_back("mag.system_noise_nT_rts", s.mag.grade.system_noise_nT_rts);
     out.emplace_back("mag.scale_factor", s.mag.grade.scale_factor);
     out.emplace_back("mag.cross_coupling", s.mag.grade.cross_coupling);

@@ -12,6 +12,7 @@
 //     atmospheric:    {grade: baseline}     # barometer + thermometer
 //     gnss:           {grade: baseline, loss_time_s: 100.0}   # omit loss_time_s: never lost
 //     platform: {...}                       # IMU mounting, see PlatformParams
+//     alignment: {...}                      # pre-flight fine alignment errors, see AlignmentErrors (alignment.hpp)
 //
 // Grade `g` of group `G` is read from <grades_dir>/<G>/<g>.yaml (grades_dir = the suite file's folder unless the
 // suite sets `grades_dir`, relative to itself). Switching a grade is a one-word edit of the suite file.
@@ -23,6 +24,7 @@
 
 #include "config/config.hpp"
 #include "math/rotation.hpp"
+#include "sensors/model/alignment.hpp"
 #include "sensors/model/grades.hpp"
 
 namespace gdnav::sensors {
@@ -78,6 +80,7 @@ struct SensorSuiteParams {
     // Grade names as selected in the suite file (for logs and the recorder).
     std::string gyr_grade, acc_grade, mag_grade, air_grade, atm_grade, gnss_grade;
     InertialParams inertial;
+    AlignmentErrors alignment;  // used by sensors_inertial (attitude, E_gyr, E_acc) and sensors_magnetic
     MagParams mag;
     AirParams air;
     AtmParams atm;

@@ -69,12 +69,13 @@ TEST(RunMetrics, FinalPercentOfDistance) {
 }
 
 TEST(RunRecord, RoundTripsEveryBit) {
-    RunMetrics m(100.0);
+    RunMetrics m(0.2, 0.0, 0.1);  // t_GNSS 0.2 s, attitude trend from 0.1 s
     for (int k = 0; k < 50; ++k) {
         NavErrors e;
         e.yaw_rad = 0.1 * k / 3.0;
         e.rot_rad = std::sqrt(2.0) * k;
         e.h_m = -1.0 / (k + 1.0);
+        e.hor_m = 3.0 * k + std::sin(k);
         m.add_errors(k * 0.01, 0.01, e);
     }
     const RunRecord r = make_run_record(m, true, 7, 42, 50);
@@ -92,6 +93,12 @@ TEST(RunRecord, RoundTripsEveryBit) {
         EXPECT_EQ(back.signals[i].final, r.signals[i].final) << i;
     }
     EXPECT_TRUE(std::isnan(back.hor_pct));  // no distance: written as .nan
+    // Trends: rot = sqrt(2) k = 100 sqrt(2) t exactly (from t = 0.1 s); hor from t = 0.2 s, nearly linear.
+    EXPECT_EQ(back.att_trend_from_s, 0.1);
+    EXPECT_NEAR(back.att_slope_rad_per_s, 100.0 * std::sqrt(2.0), 1e-9);
+    EXPECT_EQ(back.hor_slope_mps, r.hor_slope_mps);
+    EXPECT_EQ(back.hor_r2, r.hor_r2);
+    EXPECT_GT(back.hor_r2, 0.99);
     EXPECT_EQ(to_yaml(back), to_yaml(r));
     EXPECT_TRUE(run_record_complete(file));
 }

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "metrics/linear_trend.hpp"
 #include "metrics/running_stats.hpp"
 
 using gdnav::metrics::RunningStats;
@@ -59,4 +60,33 @@ TEST(RunningStats, SingleSampleHasZeroStd) {
     EXPECT_EQ(s.mean(), -2.5);
     EXPECT_EQ(s.std(), 0.0);
     EXPECT_EQ(s.smax(), -2.5);
+}
+
+// LinearTrend: exact lines, a hand-computed noisy fit, degenerate inputs.
+TEST(LinearTrend, ExactLineAndHandComputedFit) {
+    gdnav::metrics::LinearTrend line;
+    for (int i = 0; i < 1000; ++i) line.add(500.0 + 0.1 * i, 3.0e-3 - 2.0e-7 * (500.0 + 0.1 * i));
+    EXPECT_NEAR(line.slope(), -2.0e-7, 2.0e-7 * 1e-9);  // y rounding (ulp 4e-19 on 2.9e-3) over a 100-s span
+    EXPECT_NEAR(line.r2(), 1.0, 1e-12);
+    // (0,1), (1,3), (2,2), (3,5): t_mean 1.5, y_mean 2.75, S_tt 5, S_ty 5.5, S_yy 8.75 -> slope 1.1,
+    // r2 = 30.25 / 43.75 = 0.6914...
+    gdnav::metrics::LinearTrend f;
+    const double y[] = {1.0, 3.0, 2.0, 5.0};
+    for (int i = 0; i < 4; ++i) f.add(i, y[i]);
+    EXPECT_NEAR(f.slope(), 1.1, 1e-15);
+    EXPECT_NEAR(f.r2(), 30.25 / 43.75, 1e-15);
+}
+
+TEST(LinearTrend, DegenerateInputsAreNaN) {
+    gdnav::metrics::LinearTrend t;
+    EXPECT_TRUE(std::isnan(t.slope()));
+    t.add(1.0, 2.0);
+    EXPECT_TRUE(std::isnan(t.slope()));
+    t.add(1.0, 3.0);  // same t
+    EXPECT_TRUE(std::isnan(t.slope()));
+    gdnav::metrics::LinearTrend flat;
+    flat.add(0.0, 1.0);
+    flat.add(1.0, 1.0);
+    EXPECT_EQ(flat.slope(), 0.0);
+    EXPECT_TRUE(std::isnan(flat.r2()));
 }

@@ -1,5 +1,6 @@
 // Attitude filter on synthetic constant-rate turns: NEES consistency with a matched tuning, convergence from a
-// large initial error, the reference-mode initial error model, and the truth-free coarse alignment.
+// large initial error and the coarse alignment of init.mode measurements (the alignment error model is tested
+// with the sensors, tests/unit/sensors/alignment_test.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -39,22 +40,6 @@ PositionEstimate perfect_pn(const synth::Sample& s, const synth::Scenario& sc) {
 }
 
 }  // namespace
-
-TEST(NavAttitude, ReferenceInitialErrorHasTheConfiguredSpread) {
-    // gamma ~ N(0, sigma) about a unit axis: RMS angle = sigma. With the reference's non-unit axis
-    // a = (cos p1 cos p2, sin p2, sin p1), E|a|^2 = 1 + E[sin^2 p1 sin^2 p2] = 1.25, so RMS = sigma sqrt(1.25).
-    rnd::Stream s(41);
-    const double sigma = math::deg2rad(0.1);
-    const int n = 20000;
-    double sum_unit = 0.0, sum_ref = 0.0;
-    for (int i = 0; i < n; ++i) {
-        sum_unit += std::pow(math::rotv_from_quat(draw_attitude_error(sigma, true, s)).norm(), 2);
-        sum_ref += std::pow(math::rotv_from_quat(draw_attitude_error(sigma, false, s)).norm(), 2);
-    }
-    // Relative standard error of an RMS from n samples of a (scaled) chi-square(1): ~ sqrt(2/n)/2 = 0.5 %.
-    EXPECT_NEAR(std::sqrt(sum_unit / n) / sigma, 1.0, 0.03);
-    EXPECT_NEAR(std::sqrt(sum_ref / n) / sigma, std::sqrt(1.25), 0.04);
-}
 
 TEST(NavAttitude, NeesIsConsistentOnConstantRateTurn) {
     // Matched tuning: R = the synthetic sensors' white-noise variances, truth = model (constant biases, constant

@@ -20,7 +20,7 @@ namespace gdnav::nav::test {
 
 struct ChainOptions {
     std::string variant{"baseline"};
-    bool reference_init{true};   // init.mode reference (truth + small errors) instead of measurements
+    bool reference_init{true};   // init.mode alignment (truth + the reference's small errors) instead of measurements
     int steps{6000};
     int last_fix_step{-1};       // fixes after this step are dropped (-1: never)
     int dead_at_step{-1};        // call set_gnss_publisher_dead() before this step (-1: never)
@@ -48,7 +48,7 @@ inline void merge(YAML::Node dst, const YAML::Node& src) {
 
 inline YAML::Node load_tuning_node(bool reference_init) {
     YAML::Node t = YAML::LoadFile(source_path("config/nav/tuning.yaml"));
-    const char* mode = reference_init ? "reference" : "measurements";
+    const char* mode = reference_init ? "alignment" : "measurements";
     t["attitude"]["init"]["mode"] = mode;
     t["position"]["init"]["mode"] = mode;
     return t;
@@ -67,7 +67,7 @@ inline ChainRun run_chain(const synth::Scenario& sc, const ChainOptions& o, std:
     att.configure(tuning.child("attitude"), variant.child("attitude"), root.child("att"));
     pos.configure(tuning.child("position"), variant.child("position"), root.child("pos"));
     synth::Generator gen(sc, root.child("data"));
-    const StartTruth truth = gen.start_truth();
+    const Alignment align = gen.alignment(root.child("alignment"));
     ChainRun run;
     run.data.reserve(static_cast<std::size_t>(o.steps) + 1);
     for (int k = 0; k <= o.steps; ++k) {
@@ -77,8 +77,8 @@ inline ChainRun run_chain(const synth::Scenario& sc, const ChainOptions& o, std:
         const double t = s.truth.t_s;
         if (k == 0) {
             run.air.push_back(air.initialize(0, t, s.air, s.atm));
-            run.att.push_back(att.initialize(0, t, s.imu, s.mag, run.air.back(), s.gnss, &truth));
-            run.pos.push_back(pos.initialize(0, t, s.imu, s.gnss, run.air.back(), run.att.back(), &truth));
+            run.att.push_back(att.initialize(0, t, s.imu, s.mag, run.air.back(), s.gnss, &align));
+            run.pos.push_back(pos.initialize(0, t, s.imu, s.gnss, run.air.back(), run.att.back(), &align));
         } else {
             if (k == o.dead_at_step) pos.set_gnss_publisher_dead();
             const auto uk = static_cast<std::uint64_t>(k);

@@ -39,6 +39,7 @@ SensorSuiteParams suite_with(const std::string& group, const std::string& grade)
     const Config real = Config::load(test::sensors_config_dir() / "suite.yaml");
     YAML::Node node = YAML::Load(text);
     node["platform"] = real.node()["platform"];
+    node["alignment"] = real.node()["alignment"];
     return parse_sensor_suite(Config::wrap(node, "suite_with(" + group + ")"), test::sensors_config_dir());
 }
 
