@@ -1,7 +1,5 @@
 #include "nav_components.hpp"
 
-#include <memory>
-
 #include "model/air_data_filter.hpp"
 #include "model/attitude_filter.hpp"
 #include "model/position_filter.hpp"

@@ -53,7 +53,8 @@ public:
     };
 
     // tuning: `position` section of config/nav/tuning.yaml; variant: `position` section of a variant file.
-    // The stream is kept for future random draws (the filter draws nothing today).
+    // The filter draws nothing today; the stream stays in the interface so that a variant with random draws
+    // keeps the same wiring.
     void configure(const config::Config& tuning, const config::Config& variant, rnd::Stream stream);
     void configure(const Tuning& tuning, rnd::Stream stream);
 
