@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include "bench.hpp"
+#include "commands_scenario.hpp"
 #include "runtime/clock.hpp"
 #include "runtime/dds_host.hpp"
 #include "runtime/graph.hpp"
@@ -28,6 +29,7 @@ CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
         double realtime{0.0};
         std::uint64_t steps{0};
         int domain{-1};
+        scenario::Overrides o;
     };
     auto a = std::make_shared<Args>();
     auto* sub = app.add_subcommand("run", "run one simulation in a layout, supervising all its processes");
@@ -42,6 +44,9 @@ CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
     sub->add_option("--steps", a->steps, "override the number of steps");
     sub->add_option("--domain", a->domain, "DDS domain id (default: derived from the process id)")
         ->check(CLI::Range(0, 232));
+    sub->add_option("--set", a->o.sets, "override a key: path.to.key=value (YAML value; ~ removes)");
+    sub->add_option("--grade", a->o.grades, "sensor grade for every group (NAME) or one group (GROUP=NAME)");
+    sub->add_option("--variant", a->o.variants, "navigation variant NAME (nav_att, nav_pos) or COMPONENT=NAME");
     run = [a, sub, &ctx]() {
         setup_logging("gdnav", ctx.log_level);
         RunOverrides o;
@@ -51,7 +56,12 @@ CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
         if (sub->count("--realtime")) o.realtime = a->realtime;
         if (a->steps > 0) o.steps = a->steps;
         if (a->domain >= 0) o.domain_id = a->domain;
-        RunConfig rc = RunConfig::load(resolve_scenario(a->scenario), o);
+        RunConfig rc = [&] {
+            if (a->o.empty()) return RunConfig::load(resolve_scenario(scenario::scenario_alias(a->scenario)), o);
+            // Overrides apply to the scenario document before its generator runs (as in gdnav scenario/montecarlo).
+            const ScenarioDocument s = load_scenario_document(a->scenario, a->o);
+            return RunConfig::parse(document_text(s.doc), s.file.string(), o);
+        }();
         LaunchOptions lo;
         lo.layout = a->layout;
         lo.log_level = ctx.log_level;

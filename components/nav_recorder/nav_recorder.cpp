@@ -118,11 +118,22 @@ public:
             spdlog::error("nav_recorder: {}", e.what());
         }
         const auto& hor = metrics_.stats(metrics::Signal::hor);
-        spdlog::info("nav_recorder: {} run; final horizontal error {:.1f} m ({:.2f} % of {:.0f} m since t_GNSS), "
-                     "mean attitude error {:.3f} deg -> {}",
-                     complete ? "complete" : "INCOMPLETE", hor.last(), metrics_.final_percent(metrics::Signal::hor),
-                     metrics_.distance_since_gnss_m(), math::rad2deg(metrics_.stats(metrics::Signal::rot).mean()),
-                     dir_);
+        const auto& rot = metrics_.stats(metrics::Signal::rot);
+        const std::string att = rot.count() > 0
+                                    ? fmt::format("mean attitude error {:.3f} deg", math::rad2deg(rot.mean()))
+                                    : std::string("no attitude error yet (metrics start at t = 0)");
+        const char* state = complete ? "complete" : "INCOMPLETE";
+        if (hor.count() > 0 && metrics_.distance_since_gnss_m() > 0.0)
+            spdlog::info("nav_recorder: {} run; final horizontal error {:.1f} m ({:.2f} % of {:.0f} m since t_GNSS), "
+                         "{} -> {}",
+                         state, hor.last(), metrics_.final_percent(metrics::Signal::hor),
+                         metrics_.distance_since_gnss_m(), att, dir_);
+        else if (hor.count() > 0)
+            spdlog::info("nav_recorder: {} run; final horizontal error {:.1f} m (GNSS never lost), {} -> {}", state,
+                         hor.last(), att, dir_);
+        else
+            spdlog::info("nav_recorder: {} run; no horizontal figure (metrics start at t = 0), {} -> {}", state, att,
+                         dir_);
     }
 
 private:

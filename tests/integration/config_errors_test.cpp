@@ -3,6 +3,8 @@
 
 #include <fstream>
 
+#include <yaml-cpp/yaml.h>
+
 #include "process_util.hpp"
 
 using namespace gdnav::testing;
@@ -66,5 +68,38 @@ TEST(ConfigErrors, EachMalformedConfigGivesOneErrorAndStartsNothing) {
         // Nothing started: no process table, no resolved config.
         EXPECT_FALSE(fs::exists(out / "processes.yaml"));
         EXPECT_FALSE(fs::exists(out / "run.yaml"));
+    }
+}
+
+// gdnav run takes the same scenario overrides as gdnav scenario/montecarlo (--set, --variant, --grade): a bad override
+// is a configuration error before anything starts; good ones end up in the resolved run.yaml.
+TEST(ConfigErrors, RunOverridesAreValidatedAndApplied) {
+    const auto dir = temp_dir("cfg_overrides");
+    {
+        const Result r = run({GDNAV_GDNAV_EXE, "run", "--scenario", "2", "--layout", "direct", "--steps", "10",
+                              "--set", "run.dt_s=-1", "--out", (dir / "bad").string()},
+                             30.0);
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_NE(r.output.find("key 'run.dt_s': value -1 outside allowed range"), std::string::npos) << r.output;
+        EXPECT_FALSE(fs::exists(dir / "bad" / "run.yaml"));
+    }
+    {
+        const Result r = run({GDNAV_GDNAV_EXE, "run", "--scenario", "2", "--layout", "direct", "--steps", "10",
+                              "--variant", "no_such_variant", "--out", (dir / "bad2").string()},
+                             30.0);
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_NE(r.output.find("no_such_variant"), std::string::npos) << r.output;
+    }
+    {
+        const auto out = dir / "good";
+        const Result r = run({GDNAV_GDNAV_EXE, "run", "--scenario", "2", "--layout", "direct", "--steps", "10",
+                              "--variant", "hor_double_integration", "--grade", "gyroscopes=worse", "--set",
+                              "components.flight_physics.wind.speed_end_mps=0", "--out", out.string()},
+                             60.0);
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+        const YAML::Node doc = YAML::LoadFile((out / "run.yaml").string());
+        EXPECT_EQ(doc["components"]["nav_pos"]["variant"].as<std::string>(), "nav/variants/hor_double_integration.yaml");
+        EXPECT_EQ(doc["components"]["sensors_inertial"]["gyr_grade"].as<std::string>(), "worse");
+        EXPECT_EQ(doc["components"]["flight_physics"]["wind"]["speed_end_mps"].as<double>(), 0.0);
     }
 }
