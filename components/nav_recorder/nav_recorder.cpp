@@ -122,18 +122,13 @@ public:
         const std::string att = rot.count() > 0
                                     ? fmt::format("mean attitude error {:.3f} deg", math::rad2deg(rot.mean()))
                                     : std::string("no attitude error yet (metrics start at t = 0)");
-        const char* state = complete ? "complete" : "INCOMPLETE";
+        std::string horizontal = "no horizontal figure (metrics start at t = 0)";
         if (hor.count() > 0 && metrics_.distance_since_gnss_m() > 0.0)
-            spdlog::info("nav_recorder: {} run; final horizontal error {:.1f} m ({:.2f} % of {:.0f} m since t_GNSS), "
-                         "{} -> {}",
-                         state, hor.last(), metrics_.final_percent(metrics::Signal::hor),
-                         metrics_.distance_since_gnss_m(), att, dir_);
+            horizontal = fmt::format("final horizontal error {:.1f} m ({:.2f} % of {:.0f} m since t_GNSS)", hor.last(),
+                                     metrics_.final_percent(metrics::Signal::hor), metrics_.distance_since_gnss_m());
         else if (hor.count() > 0)
-            spdlog::info("nav_recorder: {} run; final horizontal error {:.1f} m (GNSS never lost), {} -> {}", state,
-                         hor.last(), att, dir_);
-        else
-            spdlog::info("nav_recorder: {} run; no horizontal figure (metrics start at t = 0), {} -> {}", state, att,
-                         dir_);
+            horizontal = fmt::format("final horizontal error {:.1f} m (GNSS never lost)", hor.last());
+        spdlog::info("nav_recorder: {} run; {}, {} -> {}", complete ? "complete" : "INCOMPLETE", horizontal, att, dir_);
     }
 
 private:
