@@ -7,6 +7,7 @@
 
 #include "bench.hpp"
 #include "commands_scenario.hpp"
+#include "run_rewrites.hpp"
 #include "runtime/clock.hpp"
 #include "runtime/dds_host.hpp"
 #include "runtime/graph.hpp"
@@ -29,6 +30,9 @@ CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
         double realtime{0.0};
         std::uint64_t steps{0};
         int domain{-1};
+        std::vector<std::string> external;
+        double join_timeout_s{0.0};
+        RunRewrites rw;
         scenario::Overrides o;
     };
     auto a = std::make_shared<Args>();
@@ -47,6 +51,16 @@ CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
     sub->add_option("--set", a->o.sets, "override a key: path.to.key=value (YAML value; ~ removes)");
     sub->add_option("--grade", a->o.grades, "sensor grade for every group (NAME) or one group (GROUP=NAME)");
     sub->add_option("--variant", a->o.variants, "navigation variant NAME (nav_att, nav_pos) or COMPONENT=NAME");
+    sub->add_option("--external", a->external,
+                    "members run outside gdnav (NAME[,NAME...]): not started, waited for (docs/protocol.md)")
+        ->delimiter(',');
+    sub->add_option("--join-timeout", a->join_timeout_s, "seconds to wait for --external members (run.join_timeout_s)")
+        ->check(CLI::Range(1.0, 86400.0));
+    sub->add_option("--record", a->rw.record, "record these topics (TOPIC[,TOPIC...] or all) to <out>/record")
+        ->delimiter(',');
+    sub->add_option("--replay", a->rw.replay_dir, "replay topics recorded in this run directory (docs/replay.md)");
+    sub->add_option("--topics", a->rw.replay_topics, "topics to replay with --replay (TOPIC[,TOPIC...])")
+        ->delimiter(',');
     run = [a, sub, &ctx]() {
         setup_logging("gdnav", ctx.log_level);
         RunOverrides o;
@@ -56,12 +70,21 @@ CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
         if (sub->count("--realtime")) o.realtime = a->realtime;
         if (a->steps > 0) o.steps = a->steps;
         if (a->domain >= 0) o.domain_id = a->domain;
+        if (!a->external.empty()) o.external = a->external;
+        if (sub->count("--join-timeout")) o.join_timeout_s = a->join_timeout_s;
+        // With --replay and no --scenario, the replayed run's own configuration is the base.
+        const bool replay_base = !a->rw.replay_dir.empty() && !sub->count("--scenario");
         RunConfig rc = [&] {
+            if (replay_base) {
+                if (!a->o.empty()) throw config::ConfigError("config error: --set/--grade/--variant need --scenario with --replay");
+                return RunConfig::load(std::filesystem::path(a->rw.replay_dir) / "run.yaml", o);
+            }
             if (a->o.empty()) return RunConfig::load(resolve_scenario(scenario::scenario_alias(a->scenario)), o);
             // Overrides apply to the scenario document before its generator runs (as in gdnav scenario/montecarlo).
             const ScenarioDocument s = load_scenario_document(a->scenario, a->o);
             return RunConfig::parse(document_text(s.doc), s.file.string(), o);
         }();
+        if (!a->rw.empty()) rc = apply_run_rewrites(rc, a->rw, ctx.registry);
         LaunchOptions lo;
         lo.layout = a->layout;
         lo.log_level = ctx.log_level;

@@ -56,6 +56,9 @@ struct Clock::Impl {
     std::uint64_t dead_mask{0};
     double start_s{0.0}, run_start_s{0.0}, last_progress_s{0.0}, next_log_s{0.0}, next_hb_s{0.0};
     double last_tick_sent_s{0.0};
+    double configured_s{0.0};   // when the member table was sent (matching timeout counts from here)
+    double next_wait_log_s{0.0};
+    std::set<std::string> refused;  // members refused for a protocol version mismatch (logged once)
     bool tick_pending{false};
     std::string host_id{host_identity()};
 
@@ -65,8 +68,7 @@ struct Clock::Impl {
     msg::RunControl control;
 
     Impl(const RunConfig& r, ClockOptions o) : rc(r), opt(std::move(o)) {
-        if (opt.members.empty())
-            for (const auto& m : rc.members) opt.members.push_back(m.name);
+        if (opt.members.empty()) opt.members = rc.member_names();
         for (const auto& n : opt.members) {
             Member m;
             m.name = n;
@@ -94,6 +96,7 @@ struct Clock::Impl {
         status_out.member(kClockName);
         status_out.host(host_id);
         status_out.kind(msg::STATUS_HEARTBEAT);
+        status_out.protocol_version(msg::LOCKSTEP_PROTOCOL_VERSION);
         status_writer->write(&status_out);
         // While waiting inside a step, re-send the current Tick: members see the clock alive and the dead set.
         if (phase == Phase::Running && now - last_tick_sent_s > kHeartbeatPeriodS && !tick_pending) send_tick(now);
@@ -114,6 +117,13 @@ struct Clock::Impl {
         control.command(cmd);
         control.steps(rc.info.steps);
         control.reason(reason);
+        control.protocol_version(msg::LOCKSTEP_PROTOCOL_VERSION);
+        control.dt_s(rc.info.dt_s);
+        control.t0_s(rc.info.t0_s);
+        control.window_steps(rc.window_steps);
+        control.done_every(rc.done_every());
+        control.member_timeout_s(rc.member_timeout_s);
+        control.seed(rc.info.seed);
         control.members().clear();
         for (Member* m : table) {
             msg::MemberInfo mi;
@@ -135,9 +145,22 @@ struct Clock::Impl {
                 if (status_in.host().to_string() != host_id) spdlog::warn("another clock ({}) on this domain and run", status_in.host());
                 continue;
             }
+            if (status_in.protocol_version() != msg::LOCKSTEP_PROTOCOL_VERSION) {
+                if (refused.insert(name).second)
+                    spdlog::error("member '{}' ({}) speaks lockstep protocol version {}, this clock speaks {}: refused "
+                                  "(docs/protocol.md, 'Versioning')",
+                                  name, status_in.host().to_string(), status_in.protocol_version(),
+                                  msg::LOCKSTEP_PROTOCOL_VERSION);
+                continue;
+            }
             auto it = members.find(name);
             if (it == members.end()) {
                 if (!status_in.free_running() || phase != Phase::Gather) continue;  // not part of this run
+                if (members.size() >= 63) {  // Tick.dead_mask has 64 bits; RunControl.members holds 64
+                    if (refused.insert(name).second)
+                        spdlog::error("free-running member '{}' refused: a run has at most 63 members", name);
+                    continue;
+                }
                 it = members.emplace(name, Member{}).first;
                 it->second.name = name;
                 it->second.free = true;
@@ -152,7 +175,11 @@ struct Clock::Impl {
                 m.inputs = status_in.inputs().to_string();
                 m.outputs = status_in.outputs().to_string();
                 m.free = m.free || status_in.free_running();
-                spdlog::debug("member '{}' present on {}", name, m.host);
+                if (rc.is_external(name))
+                    spdlog::info("external member '{}' joined from {} (inputs: {}; outputs: {})", name, m.host,
+                                 m.inputs.empty() ? "none" : m.inputs, m.outputs.empty() ? "none" : m.outputs);
+                else
+                    spdlog::debug("member '{}' present on {}", name, m.host);
                 if (m.free && m.expected)
                     spdlog::info("member '{}' is free-running (not in the barrier; run not reproducible)", name);
             }
@@ -197,7 +224,9 @@ struct Clock::Impl {
 
     void check_liveness(double now) {
         for (Member* m : table)
-            if (!m->dead && !m->free && now - m->last_seen_s > rc.member_timeout_s)
+            // Free-running members too: a disconnected hardware member is declared dead, its consumers stop holding
+            // its last sample (they see the input lost).
+            if (!m->dead && now - m->last_seen_s > rc.member_timeout_s)
                 declare_dead(*m, "no heartbeat for " + fmt::format("{:.1f}", now - m->last_seen_s) + " s", now);
     }
 
@@ -232,7 +261,39 @@ struct Clock::Impl {
         for (Member* m : table) m->last_seen_s = now;
         send_control(msg::RUN_CONFIGURE, "");
         phase = Phase::Configured;
+        configured_s = now;
         spdlog::info("all {} members present; member table sent", table.size());
+    }
+
+    // Members still missing before the table is sent: built-in ones within startup_timeout_s, external ones within
+    // join_timeout_s (with a line every 5 s saying what the clock waits for). Returns true when the run must end.
+    bool check_gather_timeouts(double now) {
+        std::string builtin, external;
+        for (const auto& n : opt.members) {
+            const Member& m = members[n];
+            if (m.present) continue;
+            std::string& list = rc.is_external(n) ? external : builtin;
+            list += (list.empty() ? "'" : ", '") + n + "'";
+        }
+        const double waited = now - start_s;
+        if (!external.empty() && now >= next_wait_log_s) {
+            next_wait_log_s = now + 5.0;
+            spdlog::info("waiting for external member(s) {} on DDS domain {}, run id {} ({:.0f} of {:.0f} s)", external,
+                         rc.domain_id, rc.info.run_index, waited, rc.join_timeout_s);
+        }
+        if (!builtin.empty() && waited > rc.startup_timeout_s) {
+            abort_reason = "start-up timeout: members missing after " + fmt::format("{:.0f}", rc.startup_timeout_s) +
+                           " s: " + builtin;
+            return true;
+        }
+        if (!external.empty() && waited > rc.join_timeout_s) {
+            abort_reason = "external member" + std::string(external.find(',') == std::string::npos ? " " : "s ") +
+                           external + " did not join within " + fmt::format("{:.0f}", rc.join_timeout_s) +
+                           " s (DDS domain " + std::to_string(rc.domain_id) + ", run id " +
+                           std::to_string(rc.info.run_index) + ")";
+            return true;
+        }
+        return false;
     }
 
     bool everyone_ready() {
@@ -270,9 +331,10 @@ struct Clock::Impl {
         f << "dead_members:\n";
         for (Member* m : table)
             if (m->dead) f << "  - {name: " << m->name << ", step: " << m->dead_at_step << "}\n";
-        bool free = false;
-        for (Member* m : table) free = free || m->free;
-        f << "reproducible: " << (free ? "false" : "true") << "\n";
+        // A free-running member, or a member declared dead at a wall-clock moment, makes the outputs timing-dependent.
+        bool timing = false;
+        for (Member* m : table) timing = timing || m->free || m->dead;
+        f << "reproducible: " << (timing ? "false" : "true") << "\n";
     }
 
     int finish(int code, double now) {
@@ -313,14 +375,7 @@ struct Clock::Impl {
             read_status(now);
             if (phase == Phase::Gather) {
                 gather(now);
-                if (phase == Phase::Gather && now - start_s > rc.startup_timeout_s) {
-                    std::string missing;
-                    for (const auto& [n, m] : members)
-                        if (m.expected && !m.present) missing += (missing.empty() ? "" : ", ") + n;
-                    abort_reason = "start-up timeout: members missing after " +
-                                   fmt::format("{:.0f}", rc.startup_timeout_s) + " s: " + missing;
-                    return finish(kExitStartup, now);
-                }
+                if (phase == Phase::Gather && check_gather_timeouts(now)) return finish(kExitStartup, now);
             } else if (phase == Phase::Configured) {
                 if (everyone_ready()) {
                     phase = Phase::Running;
@@ -329,7 +384,7 @@ struct Clock::Impl {
                     next_log_s = now + 2.0;
                     spdlog::info("all members ready; run {} starts ({} steps)", rc.info.run_index, rc.info.steps);
                     send_tick(now);
-                } else if (now - start_s > rc.startup_timeout_s) {
+                } else if (now - configured_s > rc.startup_timeout_s) {
                     std::string missing;
                     for (Member* m : table)
                         if (!m->ready && !m->free) missing += (missing.empty() ? "" : ", ") + m->name;

@@ -1,6 +1,9 @@
 #include "runtime/dds_host.hpp"
 
+#include <algorithm>
 #include <array>
+#include <filesystem>
+#include <fstream>
 #include <atomic>
 #include <map>
 #include <mutex>
@@ -23,6 +26,29 @@ using eprosima::fastrtps::Duration_t;
 
 namespace {
 
+// Steps a free-running producer's sample was late when a consumer used it at step k: (k - lag) - sample step, 0 when
+// the sample is newer than needed, -1 when there is none yet. Zero-order hold: the newest sample is used whatever
+// its age; lateness > 0 is a deadline miss. Recorded once per executed step.
+struct Lateness {
+    std::uint64_t used{0};        // steps at which a sample was available
+    std::uint64_t missing{0};     // steps with no sample yet
+    std::uint64_t misses{0};      // used samples with lateness > 0
+    std::uint64_t sum{0};
+    std::uint64_t max{0};
+    std::vector<std::int64_t> per_step;  // lateness per consumer step (-1: no sample yet)
+    void add(std::int64_t late) {
+        per_step.push_back(late);
+        if (late < 0) {
+            ++missing;
+            return;
+        }
+        ++used;
+        sum += static_cast<std::uint64_t>(late);
+        max = std::max(max, static_cast<std::uint64_t>(late));
+        misses += late > 0;
+    }
+};
+
 // Inbox of one input port: samples indexed by step (ring), or the latest sample for free-running producers.
 struct Channel {
     InputBase* port{nullptr};
@@ -37,6 +63,7 @@ struct Channel {
     std::vector<std::uint32_t> producers;  // member indices in the table
     bool free{false};                      // produced by a free-running member
     bool lost{false};                      // every producer declared dead
+    Lateness lateness;                     // free channels: how late the samples used were
 };
 
 struct Local {
@@ -52,6 +79,14 @@ struct Local {
 struct DdsHost::Impl {
     const RunConfig& rc;
     HostOptions opt;
+    // The run's timing: from the local config, replaced by the clock's CONFIGURE (protocol version >= 1), so a
+    // member that knows only the domain and the run id (an external client) steps exactly like a built-in one.
+    RunInfo ri{rc.info};
+    std::uint64_t window_steps{rc.window_steps};
+    std::uint64_t done_every{rc.done_every()};
+    double member_timeout_s{rc.member_timeout_s};
+    // How long to wait for the member table: start-up, plus the join time of external members.
+    double announce_timeout_s{rc.startup_timeout_s + (rc.external.empty() ? 0.0 : rc.join_timeout_s)};
     std::vector<std::unique_ptr<Component>> owned;
     std::vector<Local> locals;
     std::vector<std::unique_ptr<Channel>> channels;
@@ -77,6 +112,7 @@ struct DdsHost::Impl {
     std::recursive_mutex mtx;
     std::atomic<bool> pending{false};
     bool in_advance{false};
+    bool not_in_table{false};
     bool closing{false};
 
     enum class Phase { Announce, Matching, Ready, Running } phase{Phase::Announce};
@@ -175,9 +211,9 @@ struct DdsHost::Impl {
 
 
     void send_status(const Local& l, msg::StatusKind kind, const std::string& message) {
-        status_out.run_id(rc.info.run_index);
+        status_out.run_id(ri.run_index);
         status_out.step(l.next_step == 0 ? 0 : l.next_step - 1);
-        status_out.t_s(rc.info.time_of(status_out.step()));
+        status_out.t_s(ri.time_of(status_out.step()));
         status_out.member(l.comp->name());
         status_out.host(host_id);
         status_out.kind(kind);
@@ -185,6 +221,7 @@ struct DdsHost::Impl {
         status_out.outputs(join_topics(output_topics(*l.comp)));
         status_out.free_running(opt.free_running);
         status_out.message(message);
+        status_out.protocol_version(msg::LOCKSTEP_PROTOCOL_VERSION);
         status_writer->write(&status_out);
     }
 
@@ -199,10 +236,21 @@ struct DdsHost::Impl {
     bool read_control(int& code) {
         SampleInfo info;
         while (control_reader->take_next_sample(&control, &info) == ReturnCode_t::RETCODE_OK) {
-            if (!info.valid_data || control.run_id() != rc.info.run_index) continue;
+            if (!info.valid_data || control.run_id() != ri.run_index) continue;
             switch (control.command()) {
                 case msg::RUN_CONFIGURE:
-                    if (phase == Phase::Announce) configure_from_table();
+                    if (phase != Phase::Announce) break;
+                    if (control.protocol_version() != msg::LOCKSTEP_PROTOCOL_VERSION) {
+                        spdlog::error("the clock speaks lockstep protocol version {}, this member speaks {}; "
+                                      "cannot join (docs/protocol.md, 'Versioning')",
+                                      control.protocol_version(), msg::LOCKSTEP_PROTOCOL_VERSION);
+                        code = kExitStartup;
+                        return false;
+                    }
+                    adopt_timing();
+                    configure_from_table();
+                    // The clock is alive now: a member started long before it must not count that wait as silence.
+                    last_clock_s = steady_now_s();
                     break;
                 case msg::RUN_STOP:
                     spdlog::debug("host {}: STOP received", host_id);
@@ -219,6 +267,19 @@ struct DdsHost::Impl {
         return true;
     }
 
+    void adopt_timing() {
+        if (control.steps() != ri.steps || control.dt_s() != ri.dt_s || control.t0_s() != ri.t0_s)
+            spdlog::debug("timing from the clock: {} steps of {} s from t0 = {} s", control.steps(), control.dt_s(),
+                          control.t0_s());
+        ri.steps = control.steps();
+        ri.dt_s = control.dt_s();
+        ri.t0_s = control.t0_s();
+        window_steps = control.window_steps();
+        ri.seed = control.seed();
+        done_every = std::max<std::uint64_t>(control.done_every(), 1);
+        member_timeout_s = control.member_timeout_s();
+    }
+
     void configure_from_table() {
         table.assign(control.members().begin(), control.members().end());
         for (auto& l : locals) {
@@ -226,7 +287,9 @@ struct DdsHost::Impl {
             for (std::uint32_t i = 0; i < table.size(); ++i)
                 if (table[i].name().to_string() == l.comp->name()) l.index = i;
             if (l.index == UINT32_MAX) {
-                spdlog::error("member '{}' is not in the clock's member table", l.comp->name());
+                spdlog::error("member '{}' is not in the clock's member table (another run on this domain, or a "
+                              "name the run does not expect)", l.comp->name());
+                not_in_table = true;
                 continue;
             }
             for (Channel* ch : l.inputs) {
@@ -276,7 +339,7 @@ struct DdsHost::Impl {
     void read_ticks(double now) {
         SampleInfo info;
         while (tick_reader->take_next_sample(&tick, &info) == ReturnCode_t::RETCODE_OK) {
-            if (!info.valid_data || tick.stamp().run_id() != rc.info.run_index) continue;
+            if (!info.valid_data || tick.stamp().run_id() != ri.run_index) continue;
             last_clock_s = now;
             if (!have_tick || tick.stamp().step() > tick_step) tick_step = tick.stamp().step();
             have_tick = true;
@@ -304,7 +367,7 @@ struct DdsHost::Impl {
     void read_status(double now) {
         SampleInfo info;
         while (status_reader->take_next_sample(&status_in, &info) == ReturnCode_t::RETCODE_OK) {
-            if (info.valid_data && status_in.member().to_string() == kClockName && status_in.run_id() == rc.info.run_index)
+            if (info.valid_data && status_in.member().to_string() == kClockName && status_in.run_id() == ri.run_index)
                 last_clock_s = now;
         }
     }
@@ -312,7 +375,7 @@ struct DdsHost::Impl {
     void read_data(const Local& l, Channel& ch) {
         SampleInfo info;
         while (ch.reader->take_next_sample(ch.scratch, &info) == ReturnCode_t::RETCODE_OK) {
-            if (!info.valid_data || ch.ops->run_of(ch.scratch) != rc.info.run_index) continue;
+            if (!info.valid_data || ch.ops->run_of(ch.scratch) != ri.run_index) continue;
             if (ch.free) {
                 ch.ops->copy(ch.latest, ch.scratch);
                 ch.has_latest = true;
@@ -357,19 +420,35 @@ struct DdsHost::Impl {
         return true;
     }
 
+    // Free inputs of a step about to run: how many steps old the sample used is (once per executed step).
+    void record_lateness(const Local& l, std::uint64_t k) {
+        if (opt.free_running) return;  // a free-running member's own inputs are not a deadline
+        for (Channel* ch : l.inputs) {
+            if (!ch->free || ch->lost) continue;
+            if (!ch->has_latest) {
+                ch->lateness.add(-1);
+                continue;
+            }
+            const auto need = static_cast<std::int64_t>(k) - static_cast<std::int64_t>(ch->port->lag());
+            const auto have = static_cast<std::int64_t>(ch->ops->step_of(ch->latest));
+            ch->lateness.add(std::max<std::int64_t>(need - have, 0));  // a newer sample than needed is on time
+        }
+    }
+
     // Steps every local member that can; returns true if any stepped.
     bool advance() {
         bool any = false;
         for (auto& l : locals) {
             if (l.index == UINT32_MAX) continue;
-            while (have_tick && l.next_step <= tick_step + rc.window_steps && l.next_step < rc.info.steps) {
+            while (have_tick && l.next_step <= tick_step + window_steps && l.next_step < ri.steps) {
                 const std::uint64_t k = l.next_step;
                 for (Channel* ch : l.inputs) read_data(l, *ch);
                 if (!inputs_ready(l, k)) break;
-                const StepContext ctx{k, rc.info.time_of(k), rc.info.dt_s, k + 1 == rc.info.steps};
+                record_lateness(l, k);
+                const StepContext ctx{k, ri.time_of(k), ri.dt_s, k + 1 == ri.steps};
                 l.comp->step(ctx);
                 for (auto& [out, w] : l.outputs) {
-                    out->ops().set_stamp(out->data(), rc.info.run_index, k, ctx.t_s);
+                    out->ops().set_stamp(out->data(), ri.run_index, k, ctx.t_s);
                     w->write(out->data());
                 }
                 for (auto& m : l.comp->pending_status()) {
@@ -378,8 +457,8 @@ struct DdsHost::Impl {
                 }
                 l.comp->pending_status().clear();
                 ++l.next_step;
-                if (!opt.free_running && ((k + 1) % rc.done_every() == 0 || k + 1 == rc.info.steps)) {
-                    done.run_id(rc.info.run_index);
+                if (!opt.free_running && ((k + 1) % done_every == 0 || k + 1 == ri.steps)) {
+                    done.run_id(ri.run_index);
                     done.step(k);
                     done.member_index(l.index);
                     done_writer->write(&done);
@@ -388,6 +467,38 @@ struct DdsHost::Impl {
             }
         }
         return any;
+    }
+
+    // Free-running inputs (hardware-in-the-loop): one summary line per input, and <out>/lateness/<member>.yaml with
+    // the statistics and the lateness of every step (docs/protocol.md, 'Free-running members').
+    void report_lateness() {
+        for (const auto& l : locals) {
+            std::string yaml;
+            for (const Channel* ch : l.inputs) {
+                if (!ch->free || opt.free_running) continue;  // a free-running member's own inputs are not a deadline
+                const Lateness& s = ch->lateness;
+                const double mean = s.used ? static_cast<double>(s.sum) / static_cast<double>(s.used) : 0.0;
+                spdlog::info("[{}] free-running input '{}': {} steps used a sample, {} had none yet; lateness mean "
+                             "{:.2f} steps, max {} steps; deadline misses {} ({:.1f} %)",
+                             l.comp->name(), ch->port->topic(), s.used, s.missing, mean, s.max, s.misses,
+                             s.used ? 100.0 * static_cast<double>(s.misses) / static_cast<double>(s.used) : 0.0);
+                yaml += fmt::format("  {}: {{used: {}, no_sample: {}, mean_steps: {:.4f}, max_steps: {}, misses: {}, "
+                                    "per_step: [",
+                                    ch->port->topic(), s.used, s.missing, mean, s.max, s.misses);
+                for (std::size_t i = 0; i < s.per_step.size(); ++i) {
+                    if (i) yaml += ',';
+                    yaml += std::to_string(s.per_step[i]);
+                }
+                yaml += "]}\n";
+            }
+            if (yaml.empty() || rc.out_dir.empty()) continue;
+            std::error_code ec;
+            const auto dir = std::filesystem::path(rc.out_dir) / "lateness";
+            std::filesystem::create_directories(dir, ec);
+            std::ofstream f(dir / (l.comp->name() + ".yaml"));
+            f << "# lateness of free-running inputs at each step of " << l.comp->name()
+              << " (steps; -1 = no sample yet)\ninputs:\n" << yaml;
+        }
     }
 
     int loop() {
@@ -408,6 +519,10 @@ struct DdsHost::Impl {
                 break;
             }
             if (!read_control(code)) break;
+            if (not_in_table) {
+                code = kExitStartup;
+                break;
+            }
             read_status(now);
             if (phase == Phase::Matching && all_matched()) {
                 phase = Phase::Ready;
@@ -417,19 +532,19 @@ struct DdsHost::Impl {
             pending.store(false);
             process_data(now);
             if (phase == Phase::Announce || (phase != Phase::Running && !have_tick)) {
-                if (phase == Phase::Announce && now - start_s > rc.startup_timeout_s) {
+                if (phase == Phase::Announce && now - start_s > announce_timeout_s) {
                     spdlog::error("no clock: no member table from the clock '{}' within {:.1f} s", kClockName,
-                                  rc.startup_timeout_s);
+                                  announce_timeout_s);
                     code = kExitStartup;
                     break;
                 }
-                if (phase != Phase::Announce && now - last_clock_s > rc.member_timeout_s) {
+                if (phase != Phase::Announce && now - last_clock_s > member_timeout_s) {
                     spdlog::error("lost the clock '{}': no Tick or heartbeat for {:.1f} s before the start",
                                   kClockName, now - last_clock_s);
                     code = kExitLostClock;
                     break;
                 }
-            } else if (now - last_clock_s > rc.member_timeout_s) {
+            } else if (now - last_clock_s > member_timeout_s) {
                 spdlog::error("lost the clock '{}': no Tick or heartbeat for {:.1f} s (last Tick: step {})", kClockName,
                               now - last_clock_s, tick_step);
                 code = kExitLostClock;
@@ -446,6 +561,7 @@ struct DdsHost::Impl {
             if (code != kExitOk) send_status(l, msg::STATUS_EXIT, "exit code " + std::to_string(code));
             l.comp->finish(code == kExitOk);
         }
+        report_lateness();
         return code;
     }
 };

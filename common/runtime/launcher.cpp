@@ -133,6 +133,10 @@ int run_direct(const RunConfig& rc, const ComponentRegistry& reg, bool progress,
 int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& opt) {
     if (opt.layout != "direct" && opt.layout != "composed" && opt.layout != "distributed")
         throw config::ConfigError("unknown layout '" + opt.layout + "' (allowed: direct, composed, distributed)");
+    if (opt.layout == "direct" && !rc.external.empty())
+        throw config::ConfigError("config error: " + rc.origin +
+                                  ": key 'run.external': external members need the lockstep clock; use --layout "
+                                  "composed or distributed (the direct layout has no transport)");
     if (!rc.domain_given) {
         rc.domain_id = static_cast<int>(getpid() % 200) + 20;
         RunOverrides o;
@@ -162,11 +166,20 @@ int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& 
     install_stop_signal_handlers();
     children.push_back({kClockName, spawn(exe, args({"clock"}))});
     if (opt.layout == "distributed") {
-        for (const auto& m : rc.members) children.push_back({m.name, spawn(exe, args({"component", m.name}))});
+        for (const auto& m : rc.members)
+            if (!rc.is_external(m.name)) children.push_back({m.name, spawn(exe, args({"component", m.name}))});
     } else {
         std::string all;
-        for (const auto& m : rc.members) all += (all.empty() ? "" : ",") + m.name;
-        children.push_back({"composed", spawn(exe, args({"component", all}))});
+        for (const auto& m : rc.members)
+            if (!rc.is_external(m.name)) all += (all.empty() ? "" : ",") + m.name;
+        if (!all.empty()) children.push_back({"composed", spawn(exe, args({"component", all}))});
+    }
+    if (!rc.external.empty()) {
+        std::string names;
+        for (const auto& n : rc.external) names += (names.empty() ? "" : ", ") + n;
+        spdlog::info("external member(s) {} are not started by gdnav: start them on DDS domain {} with run id {} "
+                     "(e.g. `--domain {} --run {}`); waiting up to {:.0f} s",
+                     names, rc.domain_id, rc.info.run_index, rc.domain_id, rc.info.run_index, rc.join_timeout_s);
     }
     {
         std::ofstream f(fs::path(rc.out_dir) / "processes.yaml");

@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "runtime/lockstep.hpp"
 #include "runtime/scenario_generator.hpp"
 
 #ifndef GDNAV_SOURCE_CONFIG_DIR
@@ -21,6 +22,12 @@ using config::Range;
 
 std::filesystem::path config_dir() {
     if (const char* env = std::getenv("GDNAV_CONFIG_DIR"); env && *env) return env;
+#ifdef GDNAV_INSTALL_CONFIG_DIR
+    // An installed package used away from the source tree (cmake --install): its share/gdnav/config.
+    std::error_code ec;
+    if (!std::filesystem::is_directory(GDNAV_SOURCE_CONFIG_DIR, ec) && std::filesystem::is_directory(GDNAV_INSTALL_CONFIG_DIR, ec))
+        return GDNAV_INSTALL_CONFIG_DIR;
+#endif
     return GDNAV_SOURCE_CONFIG_DIR;
 }
 
@@ -60,6 +67,11 @@ RunConfig RunConfig::parse(const std::string& text, const std::string& origin, c
     if (o.out_dir) root["run"]["out_dir"] = *o.out_dir;
     if (o.realtime) root["run"]["realtime"] = *o.realtime;
     if (o.domain_id) root["run"]["domain_id"] = *o.domain_id;
+    if (o.external) {
+        root["run"]["external"] = YAML::Node(YAML::NodeType::Sequence);
+        for (const auto& n : *o.external) root["run"]["external"].push_back(n);
+    }
+    if (o.join_timeout_s) root["run"]["join_timeout_s"] = *o.join_timeout_s;
     if (o.steps) {
         root["run"].remove("duration_s");
         root["run"]["steps"] = *o.steps;
@@ -106,6 +118,8 @@ RunConfig RunConfig::parse(const std::string& text, const std::string& origin, c
     rc.domain_given = run.has("domain_id");
     rc.domain_id = static_cast<int>(run.get_int("domain_id", 0, 0, 232));
     rc.essential = run.has("essential") ? run.get_strings("essential") : std::vector<std::string>{};
+    rc.external = run.has("external") ? run.get_strings("external") : std::vector<std::string>{};
+    rc.join_timeout_s = run.get_double("join_timeout_s", 60.0, Range{1.0, 86400.0});
     rc.dds_profile = run.get_string("dds_profile", "dds/gdnav_profiles.xml");
     if (rc.dds_profile.is_relative()) rc.dds_profile = config_dir() / rc.dds_profile;
     rc.out_dir = run.get_string("out_dir", "out/run");
@@ -123,8 +137,17 @@ RunConfig RunConfig::parse(const std::string& text, const std::string& origin, c
     }
     if (rc.members.empty()) comps.fail("", "at least one component is required");
     if (rc.members.size() > 63) comps.fail("", "at most 63 components per run");
+    std::set<std::string> ext;
+    for (const auto& e : rc.external) {
+        if (e.empty() || e.size() > 63 || e.find_first_of(", \t") != std::string::npos)
+            run.fail("external", "'" + e + "' is not a member name (1-63 characters, no commas or spaces)");
+        if (e == kClockName) run.fail("external", "'clock' is the lockstep clock and cannot be external");
+        if (!ext.insert(e).second) run.fail("external", "'" + e + "' is listed twice");
+        names.insert(e);
+    }
+    if (names.size() > 63) run.fail("external", "at most 63 members per run (components and external members)");
     for (const auto& e : rc.essential)
-        if (!names.count(e)) run.fail("essential", "'" + e + "' is not a component of this run");
+        if (!names.count(e)) run.fail("essential", "'" + e + "' is not a member of this run");
     // Only 'run' and 'components' at top level; each component section is checked by build().
     for (const auto& k : top.keys())
         if (k != "run" && k != "components") top.fail(k, "unknown key (allowed: run, components)");
@@ -153,6 +176,18 @@ std::vector<std::unique_ptr<Component>> RunConfig::build(const ComponentRegistry
         if (!found) throw ConfigError("config error: " + origin + ": no component named '" + n + "'");
     }
     return out;
+}
+
+bool RunConfig::is_external(const std::string& name) const {
+    return std::find(external.begin(), external.end(), name) != external.end();
+}
+
+std::vector<std::string> RunConfig::member_names() const {
+    std::vector<std::string> v;
+    for (const auto& m : members) v.push_back(m.name);
+    for (const auto& e : external)
+        if (std::find(v.begin(), v.end(), e) == v.end()) v.push_back(e);
+    return v;
 }
 
 std::string RunConfig::to_yaml() const {

@@ -15,6 +15,8 @@
 //     window_steps: 16         # how far a member may run ahead of the last Tick (0 = strict lockstep;
 //                              # forced to 0 when realtime > 0); see docs/runtime.md
 //     essential: [plant]       # members whose loss aborts the run
+//     external: [nav_att]      # members run outside gdnav (not started; waited for; docs/protocol.md)
+//     join_timeout_s: 60       # wall-clock wait for external members before step 0
 //     domain_id: 0             # DDS domain (the launcher picks a free one when absent)
 //     dds_profile: dds/gdnav_profiles.xml   # relative to the config directory
 //     out_dir: out/run
@@ -45,6 +47,8 @@ struct RunOverrides {
     std::optional<double> realtime;
     std::optional<int> domain_id;
     std::optional<std::uint64_t> steps;
+    std::optional<std::vector<std::string>> external;
+    std::optional<double> join_timeout_s;
 };
 
 struct MemberSpec {
@@ -75,6 +79,13 @@ public:
     int domain_id{0};
     bool domain_given{false};
     std::vector<std::string> essential;
+    // Members that gdnav does not start: external participants announcing themselves under these names. A name may
+    // be a configured component (replaced) or a new member.
+    std::vector<std::string> external;
+    double join_timeout_s{60.0};
+    [[nodiscard]] bool is_external(const std::string& name) const;
+    // Barrier members the clock waits for: configured components and external members, in that order.
+    [[nodiscard]] std::vector<std::string> member_names() const;
     std::filesystem::path dds_profile;
     std::string out_dir;
     std::vector<MemberSpec> members;  // in file order
