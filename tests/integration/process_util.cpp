@@ -117,4 +117,19 @@ fs::path temp_dir(const std::string& tag) {
 std::string testchain_exe() { return GDNAV_TESTCHAIN_EXE; }
 std::string chain_scenario() { return GDNAV_CHAIN_SCENARIO; }
 
+PairResult run_pair(const std::vector<std::string>& run_argv, const std::vector<std::string>& member_argv,
+                    const fs::path& log_base, double timeout_s) {
+    const std::string run_log = log_base.string() + ".run.log", member_log = log_base.string() + ".member.log";
+    const pid_t launcher = start(run_argv, run_log);
+    const pid_t member = start(member_argv, member_log);
+    PairResult p;
+    p.run_code = wait_for(launcher, timeout_s);
+    if (p.run_code == -1) kill(-launcher, SIGKILL);
+    p.member_code = wait_for(member, 30.0);
+    if (p.member_code == -1) kill(-member, SIGKILL);
+    p.run_log = read_file(run_log);
+    p.member_log = read_file(member_log);
+    return p;
+}
+
 }  // namespace gdnav::testing

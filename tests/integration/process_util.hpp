@@ -23,6 +23,16 @@ pid_t start(const std::vector<std::string>& argv, const std::filesystem::path& l
 // Waits for pid; returns exit code (128 + signal) or -1 on timeout.
 int wait_for(pid_t pid, double timeout_s);
 
+// A run and an external member started together (gdnav run ... --external NAME, and the member), both waited for;
+// the run gets `timeout_s`, the member 30 s more; overrunning processes are killed. Logs: <log_base>.run.log and
+// <log_base>.member.log.
+struct PairResult {
+    int run_code{-1}, member_code{-1};
+    std::string run_log, member_log;
+};
+PairResult run_pair(const std::vector<std::string>& run_argv, const std::vector<std::string>& member_argv,
+                    const std::filesystem::path& log_base, double timeout_s);
+
 bool alive(pid_t pid);
 std::string read_file(const std::filesystem::path& p);
 std::map<std::string, pid_t> read_processes(const std::filesystem::path& out_dir);

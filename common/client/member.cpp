@@ -1,0 +1,139 @@
+#include "gdnav/client/member.hpp"
+
+#include <stdexcept>
+
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include "runtime/dds_host.hpp"
+#include "runtime/lockstep.hpp"
+#include "runtime/process_signals.hpp"
+#include "runtime/run_config.hpp"
+#include "runtime/topic_types.hpp"
+
+namespace gdnav::client {
+
+// The member as a runtime component: its ports are the user's, its step calls the user's callback. The DDS host
+// that runs it is the one every built-in member runs in (common/runtime/dds_host.cpp), so the protocol is the same.
+class Member::Adapter final : public runtime::Component {
+public:
+    using Component::Component;
+    void configure(const config::Config&, const runtime::RunInfo&, rnd::Stream&) override {}
+    void step(const runtime::StepContext& ctx) override {
+        if (step_fn) step_fn(StepInfo{ctx.k, ctx.t_s, ctx.dt_s, ctx.last});
+        for (auto& m : status) publish_status(std::move(m));
+        status.clear();
+    }
+    void finish(bool completed) override {
+        if (finish_fn) finish_fn(completed);
+    }
+    std::function<void(const StepInfo&)> step_fn;
+    std::function<void(bool)> finish_fn;
+    std::vector<std::string> status;
+};
+
+namespace {
+
+// An output of a type chosen at run time (by topic name).
+class AnyOutput final : public runtime::OutputBase {
+public:
+    AnyOutput(runtime::Component& owner, std::string topic, const runtime::MessageOps& ops)
+        : OutputBase(owner, std::move(topic), ops), value_(ops.create()) {}
+    ~AnyOutput() override { ops().destroy(value_); }
+    AnyOutput(const AnyOutput&) = delete;
+    AnyOutput& operator=(const AnyOutput&) = delete;
+    [[nodiscard]] void* data() override { return value_; }
+
+private:
+    void* value_;
+};
+
+const runtime::MessageOps& topic_ops(const std::string& topic) {
+    if (const runtime::MessageOps* ops = runtime::find_topic(topic)) return *ops;
+    std::string known;
+    for (const auto& t : runtime::known_topics()) known += (known.empty() ? "" : ", ") + t;
+    throw std::invalid_argument("unknown topic '" + topic + "' (known: " + known + ")");
+}
+
+}  // namespace
+
+Member::Member(Options opt)
+    : opt_(std::move(opt)), comp_(std::make_unique<Adapter>(opt_.name)), adapter_(comp_.get()) {
+    if (opt_.name.empty() || opt_.name.size() > 63 || opt_.name.find_first_of(", \t") != std::string::npos)
+        throw std::invalid_argument("member name '" + opt_.name + "': 1-63 characters, no commas or spaces");
+    if (opt_.name == runtime::kClockName) throw std::invalid_argument("member name 'clock' is reserved");
+    if (opt_.domain_id < 0 || opt_.domain_id > 232)
+        throw std::invalid_argument("DDS domain " + std::to_string(opt_.domain_id) + " out of range [0, 232]");
+    runtime::register_gdnav_topics();
+}
+
+Member::~Member() = default;
+
+runtime::Component& Member::component() {
+    if (!comp_) throw std::logic_error("gdnav::client::Member: ports must be declared before run()");
+    return *comp_;
+}
+
+const runtime::InputBase& Member::input_any(const std::string& topic, Lag lag) {
+    auto p = std::make_unique<runtime::InputBase>(component(), topic, lag, topic_ops(topic));
+    const runtime::InputBase& ref = *p;
+    inputs_.push_back(std::move(p));
+    return ref;
+}
+
+runtime::OutputBase& Member::output_any(const std::string& topic) {
+    auto p = std::make_unique<AnyOutput>(component(), topic, topic_ops(topic));
+    runtime::OutputBase& ref = *p;
+    outputs_.push_back(std::move(p));
+    return ref;
+}
+
+void Member::on_step(std::function<void(const StepInfo&)> fn) { static_cast<Adapter&>(component()).step_fn = std::move(fn); }
+
+void Member::on_finish(std::function<void(bool)> fn) { static_cast<Adapter&>(component()).finish_fn = std::move(fn); }
+
+void Member::publish_status(std::string message) {
+    if (!adapter_) throw std::logic_error("gdnav::client::Member::publish_status(): the run is over");
+    adapter_->status.push_back(std::move(message));
+}
+
+int Member::run() {
+    if (!comp_) throw std::logic_error("gdnav::client::Member::run() may be called once");
+    if (!spdlog::get(opt_.name)) setup_logging(opt_.name, opt_.log_level);
+    runtime::install_stop_signal_handlers();
+    // What the host needs before the clock's CONFIGURE tells it the run's timing (steps, dt, t0, window).
+    runtime::RunConfig rc;
+    rc.domain_id = opt_.domain_id;
+    rc.domain_given = true;
+    rc.info.run_index = opt_.run_id;
+    rc.info.steps = UINT64_MAX;
+    rc.startup_timeout_s = opt_.startup_timeout_s;
+    rc.dds_profile = opt_.dds_profile.empty() ? runtime::config_dir() / "dds" / "gdnav_profiles.xml" : opt_.dds_profile;
+    if (!std::filesystem::is_regular_file(rc.dds_profile))
+        throw std::invalid_argument("DDS profile " + rc.dds_profile.string() +
+                                    ": no such file (set --dds-profile or GDNAV_CONFIG_DIR)");
+    spdlog::info("member '{}' joining DDS domain {}, run id {}{} ({} inputs, {} outputs)", opt_.name, opt_.domain_id,
+                 opt_.run_id, opt_.free_running ? ", free-running" : "", inputs_.size(), outputs_.size());
+    std::vector<std::unique_ptr<runtime::Component>> members;
+    members.push_back(std::move(comp_));
+    runtime::HostOptions ho;
+    ho.free_running = opt_.free_running;
+    runtime::DdsHost host(rc, std::move(members), ho);
+    const int code = host.run();
+    adapter_ = nullptr;  // destroyed with the host
+    if (code == runtime::kExitOk)
+        spdlog::info("member '{}': run complete", opt_.name);
+    else
+        spdlog::error("member '{}': ended with exit code {}", opt_.name, code);
+    return code;
+}
+
+void setup_logging(const std::string& name, const std::string& level) {
+    auto logger = spdlog::get(name);
+    if (!logger) logger = spdlog::stderr_color_mt(name);
+    spdlog::set_default_logger(logger);
+    spdlog::set_pattern("[%H:%M:%S.%e] [%n] %^%l%$: %v");
+    spdlog::set_level(spdlog::level::from_str(level));
+}
+
+}  // namespace gdnav::client
