@@ -7,6 +7,7 @@
 #include "paper_scenarios.hpp"
 #include "nav_components.hpp"
 #include "recorder.hpp"
+#include "replay.hpp"
 #include "sensor_components.hpp"
 #include "truth_as_estimate.hpp"
 
@@ -14,6 +15,7 @@ namespace gdnav::app {
 
 void register_all_components(runtime::ComponentRegistry& reg) {
     recorder::register_recorder(reg);
+    replay::register_replay(reg);
     physics::register_flight_physics(reg);
     sensors::register_sensor_components(reg);
     nav::register_nav_components(reg);

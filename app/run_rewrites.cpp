@@ -1,0 +1,144 @@
+#include "run_rewrites.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+
+#include <spdlog/spdlog.h>
+
+#include "record_file.hpp"
+#include "runtime/topic_types.hpp"
+
+namespace gdnav::app {
+
+namespace fs = std::filesystem;
+using runtime::RunConfig;
+
+namespace {
+
+constexpr const char* kRecorderName = "recorder";
+constexpr const char* kReplayName = "replay";
+
+[[noreturn]] void fail(const std::string& option, const std::string& what) {
+    throw config::ConfigError("config error: " + option + ": " + what);
+}
+
+std::string join(const std::vector<std::string>& v) {
+    std::string s;
+    for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+    return s;
+}
+
+// Full topic names, in the given order without repeats; "all" (alone) = every known data topic.
+std::vector<std::string> resolve_topics(const std::vector<std::string>& names, const std::string& option,
+                                        bool allow_all) {
+    if (allow_all && names.size() == 1 && names.front() == "all") return runtime::known_topics();
+    std::vector<std::string> out;
+    for (const auto& n : names) {
+        if (n == "all") fail(option, allow_all ? "'all' must be given alone" : "'all' is not allowed here");
+        const std::string t = replay::resolve_topic(n);
+        if (t.empty()) fail(option, "unknown topic '" + n + "' (known: " + replay::known_topics_list() + ")");
+        if (std::find(out.begin(), out.end(), t) == out.end()) out.push_back(t);
+    }
+    if (out.empty()) fail(option, "no topic given");
+    return out;
+}
+
+YAML::Node sequence(const std::vector<std::string>& v) {
+    YAML::Node s(YAML::NodeType::Sequence);
+    for (const auto& x : v) s.push_back(x);
+    return s;
+}
+
+// Topics that have a record file in `record_dir` (for messages).
+std::vector<std::string> recorded_topics(const fs::path& record_dir) {
+    std::vector<std::string> v;
+    for (const auto& t : runtime::known_topics())
+        if (fs::exists(record_dir / replay::record_file_name(t))) v.push_back(t);
+    return v;
+}
+
+void add_recorder(YAML::Node comps, const std::vector<std::string>& names) {
+    const std::vector<std::string> topics = resolve_topics(names, "--record", true);
+    if (comps[kRecorderName]) {
+        const YAML::Node type = comps[kRecorderName]["type"];
+        if (!type || type.as<std::string>() != "recorder")
+            fail("--record", std::string("the run already has a member named '") + kRecorderName +
+                                 "' that is not a recorder");
+        spdlog::info("--record: the run's member '{}' now records {}", kRecorderName, join(topics));
+    } else {
+        spdlog::info("--record: member '{}' records {}", kRecorderName, join(topics));
+    }
+    YAML::Node r(YAML::NodeType::Map);
+    r["type"] = "recorder";
+    r["topics"] = sequence(topics);
+    comps[kRecorderName] = r;
+}
+
+void add_replay(YAML::Node root, const RunConfig& rc, const RunRewrites& rw, const runtime::ComponentRegistry& reg) {
+    if (rw.replay_topics.empty()) fail("--topics", "--replay needs the topics to replay (--topics ImuSample,MagSample,...)");
+    const std::vector<std::string> topics = resolve_topics(rw.replay_topics, "--topics", false);
+    std::error_code ec;
+    const fs::path run_dir = fs::absolute(rw.replay_dir);
+    const fs::path record_dir = run_dir / "record";
+    if (!fs::is_directory(run_dir, ec)) fail("--replay", "'" + rw.replay_dir + "' is not a directory");
+    for (const auto& t : topics)
+        if (!fs::exists(record_dir / replay::record_file_name(t), ec))
+            fail("--replay", (record_dir / replay::record_file_name(t)).string() + ": missing: no record of " + t +
+                                 " (recorded there: " + join(recorded_topics(record_dir)) + ")");
+    if (fs::weakly_canonical(fs::absolute(rc.out_dir), ec) == fs::weakly_canonical(run_dir, ec))
+        fail("--out", "the output directory is the replayed run directory " + run_dir.string() +
+                          " (its records would be overwritten): give another --out");
+
+    // Members whose outputs are all replayed are replaced; one that writes replayed and other topics cannot be.
+    const std::set<std::string> replayed(topics.begin(), topics.end());
+    std::vector<std::string> removed;
+    for (const auto& c : rc.build(reg)) {
+        std::vector<std::string> in, out;
+        for (const auto* o : c->outputs()) (replayed.count(o->topic()) ? in : out).push_back(o->topic());
+        if (in.empty()) continue;
+        if (!out.empty())
+            fail("--topics", "member '" + c->name() + "' writes " + join(in) + " (replayed) and " + join(out) +
+                                 " (not replayed): replay all of its outputs or none");
+        removed.push_back(c->name());
+    }
+    YAML::Node comps = root["components"];
+    if (comps[kReplayName] && std::find(removed.begin(), removed.end(), kReplayName) == removed.end())
+        fail("--replay", std::string("the run already has a member named '") + kReplayName + "'");
+    for (const auto& n : removed) comps.remove(n);
+    YAML::Node r(YAML::NodeType::Map);
+    r["type"] = "replay";
+    r["record"] = record_dir.string();
+    r["topics"] = sequence(topics);
+    comps[kReplayName] = r;
+
+    // The replay is the run's data source: essential. Replaced members leave the essential list.
+    std::vector<std::string> essential;
+    for (const auto& e : rc.essential)
+        if (std::find(removed.begin(), removed.end(), e) == removed.end()) essential.push_back(e);
+    essential.push_back(kReplayName);
+    root["run"]["essential"] = sequence(essential);
+    // A fresh DDS domain (the launcher picks one) rather than the recorded run's.
+    root["run"].remove("domain_id");
+    if (removed.empty())
+        spdlog::info("--replay: {} from {} (no member of the run produced them)", join(topics), record_dir.string());
+    else
+        spdlog::info("--replay: {} from {} replace member(s) {}", join(topics), record_dir.string(), join(removed));
+}
+
+}  // namespace
+
+RunConfig apply_run_rewrites(const RunConfig& rc, const RunRewrites& rw, const runtime::ComponentRegistry& reg) {
+    if (rw.replay_dir.empty() && !rw.replay_topics.empty()) fail("--topics", "needs --replay RUN_DIR");
+    YAML::Node root = YAML::Load(rc.to_yaml());
+    if (!rw.record.empty()) add_recorder(root["components"], rw.record);
+    if (!rw.replay_dir.empty()) add_replay(root, rc, rw, reg);
+    YAML::Emitter em;
+    em.SetDoublePrecision(17);
+    em << root;
+    return RunConfig::parse(std::string(em.c_str()) + "\n", rc.origin);
+}
+
+}  // namespace gdnav::app

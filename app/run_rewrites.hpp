@@ -1,0 +1,26 @@
+#pragma once
+// Rewrites of a resolved run configuration requested on `gdnav run`'s command line:
+//   --record TOPICS            add a `recorder` member recording these topics (or `all`) to <out>/record
+//   --replay RUN_DIR --topics  publish the listed topics from RUN_DIR's recording with a `replay` member and drop
+//                              the members whose outputs are all replayed (see docs/replay.md)
+// The result is validated like any run configuration (ConfigError with file, key and allowed values).
+#include <string>
+#include <vector>
+
+#include "runtime/registry.hpp"
+#include "runtime/run_config.hpp"
+
+namespace gdnav::app {
+
+struct RunRewrites {
+    std::vector<std::string> record;         // topic names (short "ImuSample" or full "gdnav/ImuSample"), or "all"
+    std::string replay_dir;                  // a finished run's directory (holds run.yaml and record/)
+    std::vector<std::string> replay_topics;  // topics to replay from replay_dir
+    [[nodiscard]] bool empty() const { return record.empty() && replay_dir.empty() && replay_topics.empty(); }
+};
+
+// Applies the rewrites to `rc` (already resolved: generator run, overrides applied) and returns the new config.
+runtime::RunConfig apply_run_rewrites(const runtime::RunConfig& rc, const RunRewrites& rw,
+                                      const runtime::ComponentRegistry& reg);
+
+}  // namespace gdnav::app
