@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <filesystem>
-#include <fstream>
 #include <atomic>
 #include <map>
 #include <mutex>
@@ -15,6 +13,7 @@
 
 #include "runtime/dds_context.hpp"
 #include "runtime/graph.hpp"
+#include "runtime/lateness.hpp"
 #include "runtime/lockstep.hpp"
 #include "runtime/messages.hpp"
 #include "runtime/process_signals.hpp"
@@ -25,29 +24,6 @@ using namespace eprosima::fastdds::dds;
 using eprosima::fastrtps::Duration_t;
 
 namespace {
-
-// Steps a free-running producer's sample was late when a consumer used it at step k: (k - lag) - sample step, 0 when
-// the sample is newer than needed, -1 when there is none yet. Zero-order hold: the newest sample is used whatever
-// its age; lateness > 0 is a deadline miss. Recorded once per executed step.
-struct Lateness {
-    std::uint64_t used{0};        // steps at which a sample was available
-    std::uint64_t missing{0};     // steps with no sample yet
-    std::uint64_t misses{0};      // used samples with lateness > 0
-    std::uint64_t sum{0};
-    std::uint64_t max{0};
-    std::vector<std::int64_t> per_step;  // lateness per consumer step (-1: no sample yet)
-    void add(std::int64_t late) {
-        per_step.push_back(late);
-        if (late < 0) {
-            ++missing;
-            return;
-        }
-        ++used;
-        sum += static_cast<std::uint64_t>(late);
-        max = std::max(max, static_cast<std::uint64_t>(late));
-        misses += late > 0;
-    }
-};
 
 // Inbox of one input port: samples indexed by step (ring), or the latest sample for free-running producers.
 struct Channel {
@@ -469,35 +445,14 @@ struct DdsHost::Impl {
         return any;
     }
 
-    // Free-running inputs (hardware-in-the-loop): one summary line per input, and <out>/lateness/<member>.yaml with
-    // the statistics and the lateness of every step (docs/protocol.md, 'Free-running members').
+    // Free-running inputs (hardware-in-the-loop): summary lines and <out>/lateness/<member>.yaml.
     void report_lateness() {
+        if (opt.free_running) return;  // a free-running member's own inputs are not a deadline
         for (const auto& l : locals) {
-            std::string yaml;
-            for (const Channel* ch : l.inputs) {
-                if (!ch->free || opt.free_running) continue;  // a free-running member's own inputs are not a deadline
-                const Lateness& s = ch->lateness;
-                const double mean = s.used ? static_cast<double>(s.sum) / static_cast<double>(s.used) : 0.0;
-                spdlog::info("[{}] free-running input '{}': {} steps used a sample, {} had none yet; lateness mean "
-                             "{:.2f} steps, max {} steps; deadline misses {} ({:.1f} %)",
-                             l.comp->name(), ch->port->topic(), s.used, s.missing, mean, s.max, s.misses,
-                             s.used ? 100.0 * static_cast<double>(s.misses) / static_cast<double>(s.used) : 0.0);
-                yaml += fmt::format("  {}: {{used: {}, no_sample: {}, mean_steps: {:.4f}, max_steps: {}, misses: {}, "
-                                    "per_step: [",
-                                    ch->port->topic(), s.used, s.missing, mean, s.max, s.misses);
-                for (std::size_t i = 0; i < s.per_step.size(); ++i) {
-                    if (i) yaml += ',';
-                    yaml += std::to_string(s.per_step[i]);
-                }
-                yaml += "]}\n";
-            }
-            if (yaml.empty() || rc.out_dir.empty()) continue;
-            std::error_code ec;
-            const auto dir = std::filesystem::path(rc.out_dir) / "lateness";
-            std::filesystem::create_directories(dir, ec);
-            std::ofstream f(dir / (l.comp->name() + ".yaml"));
-            f << "# lateness of free-running inputs at each step of " << l.comp->name()
-              << " (steps; -1 = no sample yet)\ninputs:\n" << yaml;
+            std::vector<std::pair<std::string, const Lateness*>> inputs;
+            for (const Channel* ch : l.inputs)
+                if (ch->free) inputs.emplace_back(ch->port->topic(), &ch->lateness);
+            runtime::report_lateness(l.comp->name(), inputs, rc.out_dir);
         }
     }
 
