@@ -26,7 +26,7 @@ using SamplePtr = std::unique_ptr<void, void (*)(void*)>;
 // A record decoded sample by sample.
 class RecordSamples {
 public:
-    RecordSamples(replay::TopicRecord r) : r_(std::move(r)), dec_(*r_.ops), s_(r_.ops->create(), r_.ops->destroy) {}
+    RecordSamples(recorder::TopicRecord r) : r_(std::move(r)), dec_(*r_.ops), s_(r_.ops->create(), r_.ops->destroy) {}
     [[nodiscard]] std::size_t size() const { return r_.entries.size(); }
     [[nodiscard]] std::uint64_t step(std::size_t i) const { return r_.entries[i].step; }
     void* load(std::size_t i) {
@@ -37,8 +37,8 @@ public:
     }
 
 private:
-    replay::TopicRecord r_;
-    replay::SampleDecoder dec_;
+    recorder::TopicRecord r_;
+    recorder::SampleDecoder dec_;
     SamplePtr s_;
 };
 
@@ -69,17 +69,17 @@ void export_log(const ExportOptions& o) {
     std::vector<double> imu_align, mag_align;
     int written = 0;
     for (const LogGroup& g : log_groups()) {
-        if (!fs::exists(record_dir / replay::record_file_name(g.topic), ec)) {
+        if (!fs::exists(record_dir / recorder::record_file_name(g.topic), ec)) {
             spdlog::info("export-log: no record of {}: no {}.csv", g.topic, g.name);
             continue;
         }
         std::unique_ptr<RecordSamples> rec;
         try {
-            rec = std::make_unique<RecordSamples>(replay::read_topic_record(record_dir, g.topic));
+            rec = std::make_unique<RecordSamples>(recorder::read_topic_record(record_dir, g.topic));
         } catch (const std::runtime_error& e) {
             fail("export-log", e.what());
         }
-        if (rec->size() == 0) fail((record_dir / replay::record_file_name(g.topic)).string(), "no samples");
+        if (rec->size() == 0) fail((record_dir / recorder::record_file_name(g.topic)).string(), "no samples");
         // The grid step from the stamps of the first and last samples.
         const double t_first = g.t_s(rec->load(0));
         double dt_s = 0.01;

@@ -65,7 +65,7 @@ void check_times(const LoadedGroup& g, double max_gap_s) {
 
 // Writes a continuous group: linear interpolation of every column at each grid instant.
 void write_continuous(const LoadedGroup& g, const ImportOptions& o, std::uint64_t steps, Sample& s,
-                      replay::RecordWriter& w) {
+                      recorder::RecordWriter& w) {
     const CsvTable& t = g.table;
     const auto& fields = g.group->fields;
     std::size_t i = 0;
@@ -90,7 +90,7 @@ void write_continuous(const LoadedGroup& g, const ImportOptions& o, std::uint64_
 
 // Writes GNSS: each fix at its nearest step; other steps hold the last fix with fix_valid false.
 std::uint64_t write_fixes(const LoadedGroup& g, const ImportOptions& o, std::uint64_t steps, Sample& s,
-                          replay::RecordWriter& w) {
+                          recorder::RecordWriter& w) {
     const CsvTable& t = g.table;
     const auto& fields = g.group->fields;
     std::vector<std::int64_t> fix_row(steps, -1);
@@ -183,7 +183,7 @@ void import_log(const ImportOptions& o) {
 
     const fs::path record_dir = o.run_dir / "record";
     fs::create_directories(record_dir);
-    std::vector<std::unique_ptr<replay::RecordWriter>> writers;
+    std::vector<std::unique_ptr<recorder::RecordWriter>> writers;
     for (const auto& g : loaded) {
         const runtime::MessageOps* ops = runtime::find_topic(g.group->topic);
         Sample s(*ops);
@@ -191,7 +191,7 @@ void import_log(const ImportOptions& o) {
             for (std::size_t c = 0; c < al.imu.size(); ++c) al.imu[c].ref(s.p) = align->at(0, c);
         if (align && g.group->name == "mag")
             for (std::size_t c = 0; c < al.mag.size(); ++c) al.mag[c].ref(s.p) = align->at(0, al.imu.size() + c);
-        writers.push_back(std::make_unique<replay::RecordWriter>(record_dir, g.group->topic));
+        writers.push_back(std::make_unique<recorder::RecordWriter>(record_dir, g.group->topic));
         try {
             if (g.group->fixes) {
                 const std::uint64_t placed = write_fixes(g, o, steps, s, *writers.back());
@@ -207,9 +207,9 @@ void import_log(const ImportOptions& o) {
             fail(record_dir.string(), e.what());
         }
     }
-    std::vector<const replay::RecordWriter*> ws;
+    std::vector<const recorder::RecordWriter*> ws;
     for (const auto& w : writers) ws.push_back(w.get());
-    replay::write_digest_file(record_dir, ws, true);
+    recorder::write_digest_file(record_dir, ws, true);
     std::ofstream info(o.run_dir / "import.yaml");
     char grid[160];
     std::snprintf(grid, sizeof(grid), "t0_s: %.17g\ndt_s: %.17g\nsteps: %llu\n", o.t0_s, o.dt_s,

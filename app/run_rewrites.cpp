@@ -38,8 +38,8 @@ std::vector<std::string> resolve_topics(const std::vector<std::string>& names, c
     std::vector<std::string> out;
     for (const auto& n : names) {
         if (n == "all") fail(option, allow_all ? "'all' must be given alone" : "'all' is not allowed here");
-        const std::string t = replay::resolve_topic(n);
-        if (t.empty()) fail(option, "unknown topic '" + n + "' (known: " + replay::known_topics_list() + ")");
+        const std::string t = recorder::resolve_topic(n);
+        if (t.empty()) fail(option, "unknown topic '" + n + "' (known: " + recorder::known_topics_list() + ")");
         if (std::find(out.begin(), out.end(), t) == out.end()) out.push_back(t);
     }
     if (out.empty()) fail(option, "no topic given");
@@ -56,7 +56,7 @@ YAML::Node sequence(const std::vector<std::string>& v) {
 std::vector<std::string> recorded_topics(const fs::path& record_dir) {
     std::vector<std::string> v;
     for (const auto& t : runtime::known_topics())
-        if (fs::exists(record_dir / replay::record_file_name(t))) v.push_back(t);
+        if (fs::exists(record_dir / recorder::record_file_name(t))) v.push_back(t);
     return v;
 }
 
@@ -85,8 +85,8 @@ void add_replay(YAML::Node root, const RunConfig& rc, const RunRewrites& rw, con
     const fs::path record_dir = run_dir / "record";
     if (!fs::is_directory(run_dir, ec)) fail("--replay", "'" + rw.replay_dir + "' is not a directory");
     for (const auto& t : topics)
-        if (!fs::exists(record_dir / replay::record_file_name(t), ec))
-            fail("--replay", (record_dir / replay::record_file_name(t)).string() + ": missing: no record of " + t +
+        if (!fs::exists(record_dir / recorder::record_file_name(t), ec))
+            fail("--replay", (record_dir / recorder::record_file_name(t)).string() + ": missing: no record of " + t +
                                  " (recorded there: " + join(recorded_topics(record_dir)) + ")");
     if (fs::weakly_canonical(fs::absolute(rc.out_dir), ec) == fs::weakly_canonical(run_dir, ec))
         fail("--out", "the output directory is the replayed run directory " + run_dir.string() +

@@ -7,7 +7,7 @@
 
 #include "runtime/topic_types.hpp"
 
-namespace gdnav::replay {
+namespace gdnav::recorder {
 
 namespace fs = std::filesystem;
 
@@ -169,13 +169,17 @@ void RecordWriter::close() {
     if (file_.fail()) throw std::runtime_error(path_.string() + ": write error");
 }
 
-void write_digest_file(const fs::path& dir, const std::vector<const RecordWriter*>& writers, bool complete) {
+void write_digest_file(const fs::path& dir, const std::vector<const RecordWriter*>& writers, bool complete,
+                       const std::map<std::string, std::uint64_t>& lost_at) {
     std::ofstream d(dir / "digest.yaml");
     d << "complete: " << (complete ? "true" : "false") << "\ntopics:\n";
-    for (const RecordWriter* w : writers)
+    for (const RecordWriter* w : writers) {
         d << "  " << w->topic() << ": {samples: " << w->samples() << ", last_step: " << w->last_step()
-          << ", digest: \"" << digest_hex(w->digest()) << "\"}\n";
+          << ", digest: \"" << digest_hex(w->digest()) << "\"";
+        if (auto it = lost_at.find(w->topic()); it != lost_at.end()) d << ", lost_at_step: " << it->second;
+        d << "}\n";
+    }
     if (!d) throw std::runtime_error((dir / "digest.yaml").string() + ": write error");
 }
 
-}  // namespace gdnav::replay
+}  // namespace gdnav::recorder

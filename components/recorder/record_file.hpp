@@ -1,9 +1,10 @@
 #pragma once
-// The runtime recorder's file format (components/recorder/recorder.hpp), read back and written outside the recorder:
+// The runtime recorder's file format (components/recorder/recorder.hpp), written by the recorder and read back:
 //   <dir>/<topic>.cdr  one record per recorded step: u64 step (little endian), u32 n, n bytes of the sample's CDR
 //                      encoding (padding zeroed); '/' in the topic name becomes "__" (gdnav__ImuSample.cdr)
 //   <dir>/digest.yaml  complete: true|false, topics: {TOPIC: {samples, last_step, digest: FNV-1a 64 hex}}
-// Used by the replay component (reads), `gdnav export-log` (reads) and `gdnav import-log` (writes).
+// Used by the recorder (writes), the replay component (reads), `gdnav export-log` (reads) and `gdnav import-log`
+// (writes).
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -16,7 +17,7 @@
 
 #include "runtime/message_traits.hpp"
 
-namespace gdnav::replay {
+namespace gdnav::recorder {
 
 inline constexpr std::uint64_t kFnvBasis = 0xcbf29ce484222325ULL;
 std::uint64_t fnv1a(std::uint64_t h, const std::uint8_t* p, std::size_t n);
@@ -97,8 +98,8 @@ private:
     std::uint64_t last_step_{0};
 };
 
-// digest.yaml in the recorder's format for the given writers.
+// digest.yaml for the given writers; `lost_at` adds lost_at_step to the topics whose producer died (recorder).
 void write_digest_file(const std::filesystem::path& dir, const std::vector<const RecordWriter*>& writers,
-                       bool complete);
+                       bool complete, const std::map<std::string, std::uint64_t>& lost_at = {});
 
-}  // namespace gdnav::replay
+}  // namespace gdnav::recorder

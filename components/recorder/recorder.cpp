@@ -9,20 +9,6 @@
 
 namespace gdnav::recorder {
 
-namespace {
-std::uint64_t fnv(std::uint64_t h, const std::uint8_t* p, std::size_t n) {
-    for (std::size_t i = 0; i < n; ++i) {
-        h ^= p[i];
-        h *= 0x100000001b3ULL;
-    }
-    return h;
-}
-std::string file_name(const std::string& topic) {
-    std::string s;
-    for (char c : topic) s += (c == '/') ? std::string("__") : std::string(1, c);
-    return s;
-}
-}  // namespace
 
 void Recorder::configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream&) {
     const auto topics = cfg.get_strings("topics");
@@ -42,13 +28,14 @@ void Recorder::configure(const config::Config& cfg, const runtime::RunInfo& run,
     dir_ = run.out_dir.empty() ? std::string() : (std::filesystem::path(run.out_dir) / "record").string();
 }
 
+void Recorder::open_files() {
+    for (auto& tr : tracks_)
+        if (!tr->writer) tr->writer = std::make_unique<RecordWriter>(dir_, tr->input->topic());
+}
+
 void Recorder::step(const runtime::StepContext& ctx) {
     if (dir_.empty()) return;
-    if (!tracks_.empty() && !tracks_.front()->file.is_open()) {
-        std::filesystem::create_directories(dir_);
-        for (auto& tr : tracks_)
-            tr->file.open(std::filesystem::path(dir_) / (file_name(tr->input->topic()) + ".cdr"), std::ios::binary);
-    }
+    if (!tracks_.empty() && !tracks_.front()->writer) open_files();
     if (ctx.k % decimation_ != 0) return;
     for (auto& tr : tracks_) {
         if (!tr->input->available()) {
@@ -58,34 +45,22 @@ void Recorder::step(const runtime::StepContext& ctx) {
             }
             continue;
         }
-        tr->input->ops().serialize(tr->input->data_ptr(), buffer_);
-        std::uint8_t head[12];
-        for (int i = 0; i < 8; ++i) head[i] = static_cast<std::uint8_t>(ctx.k >> (8 * i));
-        const auto n = static_cast<std::uint32_t>(buffer_.size());
-        for (int i = 0; i < 4; ++i) head[8 + i] = static_cast<std::uint8_t>(n >> (8 * i));
-        tr->file.write(reinterpret_cast<const char*>(head), sizeof(head));
-        tr->file.write(reinterpret_cast<const char*>(buffer_.data()), static_cast<std::streamsize>(n));
-        tr->digest = fnv(fnv(tr->digest, head, sizeof(head)), buffer_.data(), n);
-        ++tr->samples;
-        tr->last_step = ctx.k;
+        tr->writer->append(ctx.k, tr->input->data_ptr());
     }
 }
 
 void Recorder::finish(bool completed) {
     if (finished_ || dir_.empty()) return;
     finished_ = true;
-    std::filesystem::create_directories(dir_);
-    for (auto& tr : tracks_) tr->file.close();
-    std::ofstream d(std::filesystem::path(dir_) / "digest.yaml");
-    d << "complete: " << (completed ? "true" : "false") << "\ntopics:\n";
+    open_files();  // a run that ended before its first step still gets (empty) files and a digest
+    std::vector<const RecordWriter*> writers;
+    std::map<std::string, std::uint64_t> lost_at;
     for (auto& tr : tracks_) {
-        char hex[20];
-        std::snprintf(hex, sizeof(hex), "%016llx", static_cast<unsigned long long>(tr->digest));
-        d << "  " << tr->input->topic() << ": {samples: " << tr->samples << ", last_step: " << tr->last_step
-          << ", digest: \"" << hex << "\"";
-        if (tr->lost_reported) d << ", lost_at_step: " << tr->lost_at;
-        d << "}\n";
+        tr->writer->close();
+        writers.push_back(tr->writer.get());
+        if (tr->lost_reported) lost_at[tr->input->topic()] = tr->lost_at;
     }
+    write_digest_file(dir_, writers, completed, lost_at);
     spdlog::debug("recorder: wrote {}", dir_);
 }
 

@@ -8,10 +8,10 @@
 //                   the run finished normally. Two runs are bit-identical iff their digests are equal.
 // Inputs whose producer dies are recorded up to the last step they delivered (`lost_at_step` in the digest).
 #include <cstdint>
-#include <fstream>
 #include <memory>
 #include <vector>
 
+#include "record_file.hpp"
 #include "runtime/component.hpp"
 #include "runtime/registry.hpp"
 
@@ -27,15 +27,12 @@ public:
 private:
     struct Track {
         std::unique_ptr<runtime::InputBase> input;
-        std::ofstream file;
-        std::uint64_t digest{0xcbf29ce484222325ULL};
-        std::uint64_t samples{0};
-        std::uint64_t last_step{0};
+        std::unique_ptr<RecordWriter> writer;  // opened at the first step (record_file.hpp: the file format)
         bool lost_reported{false};
         std::uint64_t lost_at{0};
     };
+    void open_files();
     std::vector<std::unique_ptr<Track>> tracks_;
-    std::vector<std::uint8_t> buffer_;
     std::string dir_;
     std::uint64_t decimation_{1};
     bool finished_{false};

@@ -11,6 +11,13 @@
 namespace gdnav::replay {
 
 namespace fs = std::filesystem;
+using recorder::digest_hex;
+using recorder::DigestFile;
+using recorder::known_topics_list;
+using recorder::read_digest_file;
+using recorder::read_topic_record;
+using recorder::RecordEntry;
+using recorder::resolve_topic;
 
 // An output of a type chosen at configure time: a buffer made by the topic's MessageOps.
 class Replay::RecordedOutput final : public runtime::OutputBase {

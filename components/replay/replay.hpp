@@ -23,6 +23,10 @@
 
 namespace gdnav::replay {
 
+// The record files are the recorder's format (components/recorder/record_file.hpp).
+using recorder::SampleDecoder;
+using recorder::TopicRecord;
+
 class Replay final : public runtime::Component {
 public:
     explicit Replay(std::string name);
