@@ -1,5 +1,11 @@
 #include "nav_components.hpp"
 
+#include <cstdint>
+#include <limits>
+#include <string>
+
+#include <spdlog/spdlog.h>
+
 #include "model/air_data_filter.hpp"
 #include "model/attitude_filter.hpp"
 #include "model/position_filter.hpp"
@@ -14,9 +20,35 @@ using runtime::Output;
 
 namespace {
 
-config::Config load_section(const config::Config& cfg, const char* key, const char* fallback, const char* section) {
-    const config::Config file = config::Config::load(runtime::config_dir() / cfg.get_string(key, fallback));
-    return file.child(section);
+// The tuning file holds one section per filter (air, attitude, position) and a variant file one per filter it changes
+// (attitude, position). Each file is validated whole wherever it is read: every section is parsed by its filter's
+// parser and finish() runs on the whole file, so an unknown or misspelt key anywhere in it — also at the top level or
+// in another filter's section — is an error, whichever nav components the run has. (Only the component's own
+// section used to be finished: unknown keys elsewhere in the file were silently ignored.)
+struct NavFiles {
+    config::Config tuning;   // the whole tuning file
+    config::Config variant;  // the whole variant file
+};
+
+// The variant used to check a tuning file's attitude and position sections where the component has none (nav_air):
+// a variant never changes what a tuning section may contain.
+config::Config builtin_variant() {
+    return config::Config::parse(
+        "attitude: {specific_force: baseline}\nposition: {horizontal: frozen_wind, vertical: pressure}\n",
+        "built-in baseline variant");
+}
+
+NavFiles load_nav_files(const config::Config& cfg, bool has_variant) {
+    const auto dir = runtime::config_dir();
+    NavFiles f{config::Config::load(cfg.get_file("tuning", "nav/tuning.yaml", dir)),
+               has_variant ? config::Config::load(cfg.get_file("variant", "nav/variants/baseline.yaml", dir))
+                           : builtin_variant()};
+    AirDataFilter{}.configure(f.tuning.child("air"), rnd::Stream{});
+    AttitudeFilter{}.configure(f.tuning.child("attitude"), f.variant.child("attitude"), rnd::Stream{});
+    PositionFilter{}.configure(f.tuning.child("position"), f.variant.child("position"), rnd::Stream{});
+    f.tuning.finish();
+    f.variant.finish();
+    return f;
 }
 
 std::optional<InitMode> init_override(const config::Config& cfg) {
@@ -25,25 +57,58 @@ std::optional<InitMode> init_override(const config::Config& cfg) {
                                                                                       : InitMode::kMeasurements;
 }
 
+// Rejected-sample counts on ComponentStatus (MODE): at the first rejection, then at most once per kPeriod_s of
+// simulated time while the count grows, and once more on the last step of the run (see report_last()).
+class CountReport {
+public:
+    static constexpr double kPeriod_s = 10.0;
+    bool due(double t_s, std::uint64_t total) {
+        if (total <= reported_ || (reported_ > 0 && t_s - t_reported_s_ < kPeriod_s)) return false;
+        reported_ = total;
+        t_reported_s_ = t_s;
+        return true;
+    }
+
+private:
+    std::uint64_t reported_{0};
+    double t_reported_s_{-std::numeric_limits<double>::infinity()};
+};
+
 // ------------------------------------------------------------------------------------------------ nav_air
 class NavAir final : public runtime::Component {
 public:
     using Component::Component;
     void configure(const config::Config& cfg, const runtime::RunInfo&, rnd::Stream& stream) override {
-        const config::Config tuning = load_section(cfg, "tuning", "nav/tuning.yaml", "air");
-        filter_.configure(tuning, stream);
-        tuning.finish();
+        const NavFiles files = load_nav_files(cfg, false);
+        filter_.configure(files.tuning.child("air"), stream);
     }
     void step(const runtime::StepContext& ctx) override {
         if (!air_.available() || !atm_.available()) return;  // a lost sensor: hold the last estimate
         const AirSample a = from_msg(air_.get());
         const AtmSample p = from_msg(atm_.get());
+        if (!filter_.initialized() && (!checks::air_ok(a) || !checks::atm_ok(p))) {
+            ++init_rejected_;  // wait for a good pair
+            return;
+        }
         const AirDataEstimate e =
             filter_.initialized() ? filter_.step(ctx.k, ctx.t_s, a, p) : filter_.initialize(ctx.k, ctx.t_s, a, p);
         to_msg(e, out_.value());
+        if (report_.due(ctx.t_s, total()) || (ctx.last && total() > 0)) publish_status(counts(ctx.last));
+    }
+    void finish(bool) override {
+        if (total() > 0) spdlog::info("[{}] {}", name(), counts(true));
     }
 
 private:
+    [[nodiscard]] std::uint64_t total() const { return filter_.rejections().total() + init_rejected_; }
+    [[nodiscard]] std::string counts(bool summary) const {
+        const auto& r = filter_.rejections();
+        return fmt::format("{}rejected samples: AirSample {}, AtmSample {}, before initialisation {} (total {})",
+                           summary ? "end of run: " : "", r.air, r.atm, init_rejected_, total());
+    }
+    std::uint64_t init_rejected_{0};
+    CountReport report_;
+
     Input<msg::AirSample> air_{*this, topics::kAir};
     Input<msg::AtmSample> atm_{*this, topics::kAtm};
     Output<msg::AirDataEstimate> out_{*this, topics::kAirData};
@@ -55,9 +120,8 @@ class NavAtt final : public runtime::Component {
 public:
     using Component::Component;
     void configure(const config::Config& cfg, const runtime::RunInfo&, rnd::Stream& stream) override {
-        const config::Config tuning = load_section(cfg, "tuning", "nav/tuning.yaml", "attitude");
-        const config::Config variant = load_section(cfg, "variant", "nav/variants/baseline.yaml", "attitude");
-        filter_.configure(tuning, variant, stream.child("filter"));
+        const NavFiles files = load_nav_files(cfg, true);
+        filter_.configure(files.tuning.child("attitude"), files.variant.child("attitude"), stream.child("filter"));
         if (auto m = init_override(cfg)) {
             AttitudeFilter::Tuning t = filter_.tuning();
             t.init_mode = *m;
@@ -74,13 +138,33 @@ public:
             e = filter_.step(ctx.k, ctx.t_s, imu, mag, last_pos_);
         } else {
             if (!air_.available() || !gnss_.available() || !gnss_.get().fix_valid()) return;  // wait for a fix
+            const GnssSample gnss = from_msg(gnss_.get());
+            if (!checks::imu_ok(imu) || !checks::mag_ok(mag) || !checks::gnss_fix_ok(gnss)) {
+                ++init_rejected_;  // wait for good samples
+                return;
+            }
             const Alignment align = alignment_from_msg(imu_.get(), &mag_.get());
-            e = filter_.initialize(ctx.k, ctx.t_s, imu, mag, from_msg(air_.get()), from_msg(gnss_.get()), &align);
+            e = filter_.initialize(ctx.k, ctx.t_s, imu, mag, from_msg(air_.get()), gnss, &align);
         }
         to_msg(e, out_.value());
+        if (report_.due(ctx.t_s, total()) || (ctx.last && total() > 0)) publish_status(counts(ctx.last));
+    }
+    void finish(bool) override {
+        if (total() > 0) spdlog::info("[{}] {}", name(), counts(true));
     }
 
 private:
+    [[nodiscard]] std::uint64_t total() const { return filter_.rejections().total() + init_rejected_; }
+    [[nodiscard]] std::string counts(bool summary) const {
+        const auto& r = filter_.rejections();
+        return fmt::format(
+            "{}rejected samples: ImuSample {}, MagSample {}, PositionEstimate (p_n) {}, before initialisation {} "
+            "(total {})",
+            summary ? "end of run: " : "", r.imu, r.mag, r.position, init_rejected_, total());
+    }
+    std::uint64_t init_rejected_{0};
+    CountReport report_;
+
     Input<msg::ImuSample> imu_{*this, topics::kImu};
     Input<msg::MagSample> mag_{*this, topics::kMag};
     Input<msg::AirDataEstimate> air_{*this, topics::kAirData};
@@ -96,9 +180,8 @@ class NavPos final : public runtime::Component {
 public:
     using Component::Component;
     void configure(const config::Config& cfg, const runtime::RunInfo&, rnd::Stream& stream) override {
-        const config::Config tuning = load_section(cfg, "tuning", "nav/tuning.yaml", "position");
-        const config::Config variant = load_section(cfg, "variant", "nav/variants/baseline.yaml", "position");
-        filter_.configure(tuning, variant, stream.child("filter"));
+        const NavFiles files = load_nav_files(cfg, true);
+        filter_.configure(files.tuning.child("position"), files.variant.child("position"), stream.child("filter"));
         if (auto m = init_override(cfg)) {
             PositionFilter::Tuning t = filter_.tuning();
             t.init_mode = *m;
@@ -110,6 +193,10 @@ public:
         GnssSample gnss;  // fix_valid false unless a sample is there
         if (gnss_.available()) {
             gnss = from_msg(gnss_.get());
+            if (publisher_dead_) {  // the publisher was restarted
+                publisher_dead_ = false;
+                filter_.set_gnss_publisher_alive();
+            }
         } else if (gnss_.lost() && !publisher_dead_) {
             publisher_dead_ = true;
             filter_.set_gnss_publisher_dead();
@@ -119,19 +206,75 @@ public:
         const AttitudeEstimate att = from_msg(att_.get());
         PositionEstimate e;
         if (filter_.initialized()) {
+            const std::uint64_t gate_before = filter_.rejections().gnss_gate;
             e = filter_.step(ctx.k, ctx.t_s, imu, gnss, air, att);
+            if (filter_.rejections().gnss_gate > gate_before && ctx.t_s - t_gate_status_s_ >= CountReport::kPeriod_s) {
+                t_gate_status_s_ = ctx.t_s;
+                publish_status(fmt::format("GNSS fix rejected by the chi-square gate: d2 = {:.1f} > {} ({} rejected)",
+                                           filter_.gate_d2_last(), filter_.tuning().gate_chi2_6dof,
+                                           filter_.rejections().gnss_gate));
+            }
         } else {
             if (!gnss.fix_valid) return;  // wait for the first fix
+            if (!checks::gnss_fix_ok(gnss) || !checks::imu_ok(imu) || !checks::air_estimate_ok(air) ||
+                !checks::attitude_estimate_ok(att)) {
+                ++init_rejected_;  // wait for good samples
+                return;
+            }
             const Alignment align = alignment_from_msg(imu_.get());  // E_acc only
             e = filter_.initialize(ctx.k, ctx.t_s, imu, gnss, air, att, &align);
         }
-        if (e.gnss_lost_event)
-            publish_status(publisher_dead_ ? "GNSS lost: the GNSS publisher was declared dead"
-                                           : "GNSS lost: no valid fix for more than 1.5 s");
+        if (e.gnss_lost_event) {
+            t_lost_s_ = ctx.t_s;
+            switch (filter_.denied_reason()) {
+                case PositionFilter::DeniedReason::kPublisherDead:
+                    publish_status("GNSS lost: the GNSS publisher was declared dead");
+                    break;
+                case PositionFilter::DeniedReason::kUntrusted:
+                    publish_status(fmt::format("GNSS lost: fix source untrusted after {} consecutive fixes rejected "
+                                               "by the chi-square gate",
+                                               filter_.tuning().gate_max_consecutive_rejections));
+                    break;
+                default:
+                    publish_status(fmt::format("GNSS lost: no valid fix for more than {} s",
+                                               filter_.tuning().gnss_loss_timeout_s));
+            }
+        }
+        if (e.gnss_reacquired_event)
+            publish_status(fmt::format("GNSS re-acquired: back to GNSS-aided after {} consecutive consistent fixes "
+                                       "({:.2f} s denied)",
+                                       filter_.tuning().reacquire_fixes, ctx.t_s - t_lost_s_));
+        if (report_.due(ctx.t_s, total()) || (ctx.last && total() > 0)) publish_status(counts(ctx.last));
         to_msg(e, out_.value());
+    }
+    void finish(bool) override {
+        if (total() > 0 || filter_.reacquisitions() > 0) {
+            spdlog::info("[{}] {}", name(), counts(true));
+        } else {
+            spdlog::debug("[{}] {}", name(), counts(true));
+        }
     }
 
 private:
+    [[nodiscard]] std::uint64_t total() const {
+        const auto& r = filter_.rejections();
+        return r.inputs() + r.gnss_gate + r.gnss_reacquire + init_rejected_;
+    }
+    [[nodiscard]] std::string counts(bool summary) const {
+        const auto& r = filter_.rejections();
+        return fmt::format(
+            "{}rejected samples: ImuSample {}, GnssSample (invalid) {}, AirDataEstimate {}, AttitudeEstimate {}, "
+            "before initialisation {}; GNSS fixes rejected by the chi-square gate {} (accepted {}, largest accepted "
+            "d2 {:.1f}), refused for re-acquisition {}; re-acquisitions {} (total rejected {})",
+            summary ? "end of run: " : "", r.imu, r.gnss_invalid, r.air, r.attitude, init_rejected_, r.gnss_gate,
+            filter_.gate_accepted(), filter_.gate_d2_max_accepted(), r.gnss_reacquire, filter_.reacquisitions(),
+            total());
+    }
+    std::uint64_t init_rejected_{0};
+    CountReport report_;
+    double t_gate_status_s_{-std::numeric_limits<double>::infinity()};
+    double t_lost_s_{0.0};
+
     Input<msg::ImuSample> imu_{*this, topics::kImu};
     Input<msg::GnssSample> gnss_{*this, topics::kGnss};
     Input<msg::AirDataEstimate> air_{*this, topics::kAirData};

@@ -8,8 +8,11 @@
 // optionally `init_mode: measurements | alignment` (overrides the tuning file). In alignment mode the filters start
 // from the pre-flight fine alignment the sensors publish with their samples (ImuSample / MagSample align_*: attitude,
 // E_gyr, E_acc, E_mag, B_dev and their sigmas; models-nav.md §6). No navigation component reads the truth.
-// nav_pos enters GNSS-denied mode when no valid fix arrived for 1.5 s of simulated time or at the step the clock
-// declares the GNSS publisher dead, and publishes "GNSS lost" on ComponentStatus.
+// nav_pos enters GNSS-denied mode when no valid fix arrived for 1.5 s of simulated time, at the step the clock
+// declares the GNSS publisher dead, or when 5 fixes in a row fail its chi-square gate (source untrusted), and
+// publishes "GNSS lost: <reason>" on ComponentStatus; it returns to GNSS-aided after 5 consecutive consistent fixes
+// and publishes "GNSS re-acquired". Every filter rejects non-finite or out-of-range samples; the components publish
+// the rejection counts on ComponentStatus (MODE) and log an end-of-run summary (docs/navigation.md, issue 11).
 #include "runtime/registry.hpp"
 
 namespace gdnav::nav {

@@ -13,10 +13,14 @@
 // reference (same Q, R, P0). There is no air data variant.
 // Initialisation (truth-free, as the reference): x0 = raw measurements, Hp0 = Hp(p~), rates 0;
 //   P0 = diag(sigma^2 + B0^2 for TAS, AOA, AOS, T;  dHp^2 with dHp = Hp(p~ + sqrt(sigma_p^2 + B0_p^2)) - Hp(p~);  0).
+// Input checks (input_checks.hpp): an AirSample or AtmSample that is non-finite or out of range is rejected and
+//   counted; the step then updates with the other sample's rows only (or just propagates when both are rejected).
+//   initialize() throws on a rejected sample (the component waits for a good pair).
 #include <cstdint>
 
 #include "config/config.hpp"
 #include "filters/ekf.hpp"
+#include "input_checks.hpp"
 #include "nav_types.hpp"
 #include "random/stream.hpp"
 
@@ -46,6 +50,14 @@ public:
     AirDataEstimate initialize(std::uint64_t k, double t_s, const AirSample& air, const AtmSample& atm);
     AirDataEstimate step(std::uint64_t k, double t_s, const AirSample& air, const AtmSample& atm);
 
+    // Samples rejected by the input checks since configure().
+    struct Rejections {
+        std::uint64_t air{0};  // AirSample (TAS, AOA, AOS)
+        std::uint64_t atm{0};  // AtmSample (static pressure, temperature)
+        [[nodiscard]] std::uint64_t total() const { return air + atm; }
+    };
+    [[nodiscard]] const Rejections& rejections() const { return rej_; }
+
     [[nodiscard]] bool initialized() const { return initialized_; }
     [[nodiscard]] const StateVec& state() const { return x_; }
     [[nodiscard]] const StateCov& covariance() const { return p_; }
@@ -64,6 +76,7 @@ private:
     StateVec x_ = StateVec::Zero();
     StateCov p_ = StateCov::Zero();
     StateCov phi_ = StateCov::Identity();
+    Rejections rej_;
     bool initialized_{false};
 };
 

@@ -1,15 +1,19 @@
 #include "attitude_filter.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "filters/quat_jacobians.hpp"
 #include "math/rotation.hpp"
 #include "nav_earth.hpp"
+#include "tuning_ranges.hpp"
 
 namespace gdnav::nav {
 
 using config::Range;
+using namespace tuning_ranges;
+
 using filters::Quat4;
 
 att::SpecificForceModel parse_specific_force_model(const config::Config& variant) {
@@ -25,24 +29,24 @@ void AttitudeFilter::configure(const config::Config& tuning, const config::Confi
     t.dt_s = tuning.get_double("dt_s", Range{1e-4, 1.0});
     t.transition_order = static_cast<int>(tuning.get_int("transition_order", 1, 4));
     const config::Config q = tuning.child("q_per_step");
-    t.q_diag.segment<4>(att::kQ).setConstant(q.get_double("q", Range::nonneg()));
-    t.q_diag.segment<3>(att::kW).setConstant(q.get_double("w_nb_rad2ps2", Range::nonneg()));
-    t.q_diag.segment<3>(att::kEgyr).setConstant(q.get_double("gyr_bias_rad2ps2", Range::nonneg()));
-    t.q_diag.segment<3>(att::kEmag).setConstant(q.get_double("mag_bias_nT2", Range::nonneg()));
-    t.q_diag.segment<3>(att::kBdev).setConstant(q.get_double("b_dev_nT2", Range::nonneg()));
+    t.q_diag.segment<4>(att::kQ).setConstant(q.get_double("q", kVariance));
+    t.q_diag.segment<3>(att::kW).setConstant(q.get_double("w_nb_rad2ps2", kVariance));
+    t.q_diag.segment<3>(att::kEgyr).setConstant(q.get_double("gyr_bias_rad2ps2", kVariance));
+    t.q_diag.segment<3>(att::kEmag).setConstant(q.get_double("mag_bias_nT2", kVariance));
+    t.q_diag.segment<3>(att::kBdev).setConstant(q.get_double("b_dev_nT2", kVariance));
     const config::Config r = tuning.child("r");
-    t.r_diag.segment<3>(att::kYgyr).setConstant(r.get_double("gyr_rad2ps2", Range::positive()));
-    t.r_diag.segment<3>(att::kYacc) = r.get_vec3("acc_m2ps4", Range::positive());
-    t.r_diag.segment<3>(att::kYmag).setConstant(r.get_double("mag_nT2", Range::positive()));
-    t.gyr_noise_var = tuning.get_double("gyr_noise_var_rad2ps2", Range::nonneg());
+    t.r_diag.segment<3>(att::kYgyr).setConstant(r.get_double("gyr_rad2ps2", kPositiveVariance));
+    t.r_diag.segment<3>(att::kYacc) = r.get_vec3("acc_m2ps4", kPositiveVariance);
+    t.r_diag.segment<3>(att::kYmag).setConstant(r.get_double("mag_nT2", kPositiveVariance));
+    t.gyr_noise_var = tuning.get_double("gyr_noise_var_rad2ps2", kVariance);
     const config::Config init = tuning.child("init");
     t.init_mode = init.get_choice("mode", {"measurements", "alignment"}) == "alignment" ? InitMode::kAlignment
                                                                                          : InitMode::kMeasurements;
     const config::Config im = init.child("measurements");
     t.init_sigmas.att_rad = im.get_angle_deg("att_sigma_deg", Range{0.0, 30.0});
-    t.init_sigmas.gyr_bias_rps.setConstant(im.get_angle_deg("gyr_bias_sigma_dps", Range::nonneg()));
-    t.init_sigmas.mag_bias_nT = im.get_vec3("mag_bias_sigma_nT", Range::nonneg());
-    t.init_sigmas.b_dev_nT = im.get_vec3("b_dev_sigma_nT", Range::nonneg());
+    t.init_sigmas.gyr_bias_rps.setConstant(im.get_angle_deg("gyr_bias_sigma_dps", Range{0.0, 1.0e3}));
+    t.init_sigmas.mag_bias_nT = im.get_vec3("mag_bias_sigma_nT", Range{0.0, kMaxSigma});
+    t.init_sigmas.b_dev_nT = im.get_vec3("b_dev_sigma_nT", Range{0.0, kMaxSigma});
     t.align_q_p0 = init.child("alignment").get_double("q_p0", Range{0.0, 1.0});
     t.model = parse_specific_force_model(variant);
     tuning.finish();
@@ -53,12 +57,16 @@ void AttitudeFilter::configure(const config::Config& tuning, const config::Confi
 void AttitudeFilter::configure(const Tuning& tuning, rnd::Stream stream) {
     tun_ = tuning;
     stream_ = stream;
+    rej_ = {};
+    pos_held_valid_ = false;
     initialized_ = false;
 }
 
 AttitudeEstimate AttitudeFilter::initialize(std::uint64_t k, double t_s, const ImuSample& imu, const MagSample& mag,
                                             const AirDataEstimate& air, const GnssSample& gnss,
                                             const Alignment* align) {
+    if (!checks::imu_ok(imu) || !checks::mag_ok(mag))
+        throw std::invalid_argument("AttitudeFilter::initialize: non-finite or out-of-range IMU or magnetometer sample");
     AttitudeInit in;
     if (tun_.init_mode == InitMode::kAlignment) {
         if (align == nullptr || !align->valid())
@@ -127,14 +135,44 @@ AttitudeEstimate AttitudeFilter::step(std::uint64_t k, double t_s, const ImuSamp
     x_ += tun_.dt_s * att::derivative(x_);
     normalise_quaternion();
     filters::propagate_covariance_leading_diag<att::kN, att::kJ>(p_, phi, tun_.q_diag);
-    // Update with the p_n vector of the previous position estimate.
-    const att::PnVector pn = att::make_pn(pos_prev);
+    // Input checks: a rejected previous position estimate is replaced by the last good one.
+    bool pos_good = checks::position_estimate_ok(pos_prev);
+    if (pos_good) {
+        pos_held_ = pos_prev;
+        pos_held_valid_ = true;
+    } else {
+        ++rej_.position;
+        pos_good = pos_held_valid_;
+    }
+    const bool mag_good = checks::mag_ok(mag);
+    bool imu_good = checks::imu_ok(imu);
+    if (!imu_good) ++rej_.imu;
+    if (!mag_good) ++rej_.mag;
+    imu_good = imu_good && pos_good;  // the accelerometer rows need p_n
+    // Update with the p_n vector of the previous position estimate (rows 0-5: IMU, rows 6-8: magnetometer).
+    const att::PnVector pn = att::make_pn(pos_held_valid_ ? pos_held_ : pos_prev);
     att::MeasVec y;
     y << imu.w_b_rps, imu.f_b_mps2, mag.b_b_nT;
-    const att::MeasVec r = y - att::observe(x_, pn, tun_.model);
-    const auto info = filters::joseph_update_diag<att::kN, att::kM>(x_, p_, r, att::observation_jacobian(x_, pn, tun_.model),
-                                                               tun_.r_diag);
-    last_nis_ = info.nis;
+    if (imu_good && mag_good) {
+        const att::MeasVec r = y - att::observe(x_, pn, tun_.model);
+        const auto info = filters::joseph_update_diag<att::kN, att::kM>(
+            x_, p_, r, att::observation_jacobian(x_, pn, tun_.model), tun_.r_diag);
+        last_nis_ = info.nis;
+    } else if (imu_good || mag_good) {
+        const att::MeasVec r = y - att::observe(x_, pn, tun_.model);
+        const att::MeasJac h = att::observation_jacobian(x_, pn, tun_.model);
+        if (imu_good) {
+            last_nis_ = filters::joseph_update_diag<att::kN, 6>(x_, p_, r.head<6>().eval(), h.topRows<6>().eval(),
+                                                                tun_.r_diag.head<6>().eval())
+                            .nis;
+        } else {
+            last_nis_ = filters::joseph_update_diag<att::kN, 3>(x_, p_, r.tail<3>().eval(), h.bottomRows<3>().eval(),
+                                                                tun_.r_diag.tail<3>().eval())
+                            .nis;
+        }
+    } else {
+        last_nis_ = 0.0;
+    }
     normalise_quaternion();
     return output(k, t_s);
 }

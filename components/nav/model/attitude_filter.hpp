@@ -13,10 +13,15 @@
 // only the coupling term of the specific-force observation differs (att::coupling_velocity_n).
 // Tuning (config/nav/tuning.yaml, `attitude`): Q and R as the reference "configuration #4" (models-nav.md §4.4),
 // initialisation as nav_init.hpp.
+// Input checks (input_checks.hpp): an ImuSample (rows gyro + accelerometer) or MagSample (rows magnetometer) that is
+//   non-finite or out of range is rejected and counted, and the update uses the other sample's rows only (propagate
+//   only when both are rejected). A rejected previous PositionEstimate (p_n source) is replaced by the last good one
+//   (or, before any, the accelerometer rows are skipped). The state never sees a rejected value.
 #include <cstdint>
 
 #include "attitude_model.hpp"
 #include "config/config.hpp"
+#include "input_checks.hpp"
 #include "math/rotation.hpp"
 #include "nav_init.hpp"
 #include "random/stream.hpp"
@@ -70,6 +75,15 @@ public:
     AttitudeEstimate step(std::uint64_t k, double t_s, const ImuSample& imu, const MagSample& mag,
                           const PositionEstimate& pos_prev);
 
+    // Samples rejected by the input checks since configure().
+    struct Rejections {
+        std::uint64_t imu{0};
+        std::uint64_t mag{0};
+        std::uint64_t position{0};  // previous PositionEstimate (p_n source)
+        [[nodiscard]] std::uint64_t total() const { return imu + mag + position; }
+    };
+    [[nodiscard]] const Rejections& rejections() const { return rej_; }
+
     [[nodiscard]] bool initialized() const { return initialized_; }
     [[nodiscard]] const att::StateVec& state() const { return x_; }
     [[nodiscard]] const att::StateCov& covariance() const { return p_; }
@@ -88,6 +102,9 @@ private:
     att::StateVec x_ = att::StateVec::Zero();
     att::StateCov p_ = att::StateCov::Zero();
     double last_nis_{0.0};
+    Rejections rej_;
+    PositionEstimate pos_held_;  // last PositionEstimate that passed the checks
+    bool pos_held_valid_{false};
     bool initialized_{false};
 };
 

@@ -95,6 +95,8 @@ struct PositionEstimate {
     bool gnss_denied{false};
     // [not in IDL, event for ComponentStatus MODE] true only on the step the filter switched to GNSS-denied.
     bool gnss_lost_event{false};
+    // [not in IDL, event for ComponentStatus MODE] true only on the step the filter went back to GNSS-aided.
+    bool gnss_reacquired_event{false};
     // [not in IDL] estimated specific force f_ib_b (position filter state), useful for diagnostics.
     Vec3 f_b_mps2{Vec3::Zero()};
 };

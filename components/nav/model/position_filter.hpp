@@ -16,6 +16,24 @@
 // GNSS-denied phase: a 6-state EKF [f_ib_b, E_acc] (static, y = f + E_acc, H = [I I]) started from the aided
 //   filter's sub-state and covariance blocks; wind and dp frozen at their values of the last valid fix; position,
 //   velocity, wind and altitude by the variant's rules (denied_rules.hpp), seeded with the aided filter's last state.
+// GNSS integrity (issue 11; tuning `position.gnss_integrity`, docs/navigation.md "GNSS integrity and re-acquisition"):
+//   chi-square gate: on a fix step of the aided phase, the GNSS part of the innovation (v_n, lon, lat, h; lon/lat
+//     turned into metres) and its covariance S = H P- H^T + R give d2 = r^T S^-1 r (6 dof); a fix with
+//     d2 > gate_chi2_6dof is rejected (counted; the step updates with the accelerometer only). After
+//     max_consecutive_rejections rejections in a row the fix source is declared untrusted and the filter goes
+//     GNSS-denied (event reason kUntrusted): coasting on a spoofed or broken source is worse than dead reckoning.
+//   re-acquisition (denied phase, reacquire_fixes > 0; 0 keeps the reference's one-way switch): a fix counts towards
+//     re-acquisition when it passes the input checks, lies within reacquire_dr_bound_m + reacquire_dr_bound_rate_mps
+//     x (time since the switch to denied) of the dead-reckoned position (horizontal), and is consistent with the
+//     previous counted fix (<= gnss_loss_timeout_s earlier; position difference minus the mean fix velocity x dt,
+//     chi-square with 3 dof <= reacquire_consistency_chi2_3dof under the fix sigmas). After reacquire_fixes such fixes
+//     in a row the aided EKF is reset: position and velocity from the last fix with P0 = the fix variances (as at
+//     initialisation: the fix, not the dead-reckoned estimate, is the prior, so no inflation for the denied-phase
+//     error is needed), f and E_acc with their covariance from the denied 6-state EKF, the GNSS wind and dp low
+//     passes restarted from their instant values. The step carries gnss_reacquired_event = true.
+// Input checks (input_checks.hpp): a rejected ImuSample skips the accelerometer rows (propagation only without a
+//   fix), a rejected fix is not a fix, a rejected AirDataEstimate or AttitudeEstimate is replaced by the last good
+//   one. Counted per input (rejections()).
 // Variants (`position` section of a variant file): horizontal: frozen_wind | double_integration | wind_integration;
 //   vertical: pressure | integration | airspeed_integration.
 // Longitudes are output in (-pi, pi]; longitude innovations are wrapped.
@@ -25,6 +43,7 @@
 #include "denied_rules.hpp"
 #include "gnss_aided_model.hpp"
 #include "gnss_loss_monitor.hpp"
+#include "input_checks.hpp"
 #include "nav_init.hpp"
 #include "random/stream.hpp"
 
@@ -50,6 +69,28 @@ public:
         double init_acc_bias_sigma_mps2{0.157};  // measurements mode
         denied::HorizontalRule horizontal{denied::HorizontalRule::kFrozenWind};
         denied::VerticalRule vertical{denied::VerticalRule::kPressure};
+        // GNSS integrity (gnss_integrity section)
+        double gate_chi2_6dof{40.0};
+        int gate_max_consecutive_rejections{5};
+        int reacquire_fixes{5};
+        double reacquire_consistency_chi2_3dof{30.0};
+        double reacquire_dr_bound_m{100.0};
+        double reacquire_dr_bound_rate_mps{3.0};
+    };
+
+    // Why the filter went GNSS-denied (the last switch).
+    enum class DeniedReason { kNone, kTimeout, kPublisherDead, kUntrusted };
+
+    // Samples rejected since configure(), per input, and the GNSS integrity counters.
+    struct Rejections {
+        std::uint64_t imu{0};             // ImuSample failing the input checks
+        std::uint64_t gnss_invalid{0};    // fix_valid sample with non-finite or out-of-range values
+        std::uint64_t air{0};             // AirDataEstimate failing the checks (last good one used)
+        std::uint64_t attitude{0};        // AttitudeEstimate failing the checks (last good one used)
+        std::uint64_t gnss_gate{0};       // fixes rejected by the chi-square gate (aided phase)
+        std::uint64_t gnss_reacquire{0};  // fixes refused for re-acquisition (denied phase: too far from the dead-
+                                          // reckoned position, or inconsistent with the previous fix)
+        [[nodiscard]] std::uint64_t inputs() const { return imu + gnss_invalid + air + attitude; }
     };
 
     // tuning: `position` section of config/nav/tuning.yaml; variant: `position` section of a variant file.
@@ -72,19 +113,33 @@ public:
 
     // The runtime declared the GNSS publisher dead: the next step runs GNSS-denied.
     void set_gnss_publisher_dead() { monitor_.set_publisher_dead(); }
+    // The GNSS publisher is alive again (restarted): its fixes may re-acquire.
+    void set_gnss_publisher_alive() { monitor_.set_publisher_alive(); }
 
     [[nodiscard]] bool initialized() const { return initialized_; }
     [[nodiscard]] bool gnss_denied() const { return monitor_.denied(); }
+    [[nodiscard]] DeniedReason denied_reason() const { return denied_reason_; }
+    [[nodiscard]] const Rejections& rejections() const { return rej_; }
+    [[nodiscard]] std::uint64_t reacquisitions() const { return reacquisitions_; }
+    [[nodiscard]] std::uint64_t gate_accepted() const { return gate_accepted_; }
+    // Largest chi-square value of an accepted fix, and the value of the last gated fix (accepted or not).
+    [[nodiscard]] double gate_d2_max_accepted() const { return gate_d2_max_accepted_; }
+    [[nodiscard]] double gate_d2_last() const { return gate_d2_last_; }
     [[nodiscard]] const Tuning& tuning() const { return tun_; }
     [[nodiscard]] const aided::StateVec& aided_state() const { return x_; }
     [[nodiscard]] const aided::StateCov& aided_covariance() const { return p_; }
     [[nodiscard]] const filters::Vec<kNd>& denied_state() const { return xd_; }
 
 private:
-    void aided_step(const ImuSample& imu, const GnssSample& gnss, bool fix, const AirDataEstimate& air,
+    // Returns false when the fix was rejected by the chi-square gate.
+    bool aided_step(const ImuSample& imu, bool imu_good, const GnssSample& gnss, bool fix, const AirDataEstimate& air,
                     const AttitudeEstimate& att);
-    void enter_denied();
-    void denied_step(const ImuSample& imu, const AirDataEstimate& air, const AttitudeEstimate& att);
+    void enter_denied(double t_s);
+    void denied_step(const ImuSample& imu, bool imu_good, const AirDataEstimate& air, const AttitudeEstimate& att);
+    void reacquisition_candidate(double t_s, const GnssSample& gnss, const AirDataEstimate& air,
+                                 const AttitudeEstimate& att);
+    void reacquire(double t_s, const GnssSample& gnss, const AirDataEstimate& air, const AttitudeEstimate& att);
+    void set_fix_covariance(double lat_rad, double h_m);
     [[nodiscard]] Vec3 wind_instant(const AirDataEstimate& air, const AttitudeEstimate& att) const;
     [[nodiscard]] double dp_instant(const AirDataEstimate& air) const;
     [[nodiscard]] PositionEstimate output(std::uint64_t k, double t_s, const AirDataEstimate& air) const;
@@ -105,6 +160,21 @@ private:
     denied::DeniedState ds_;
     bool initialized_{false};
     bool lost_event_{false};
+    // integrity and input checks
+    Rejections rej_;
+    AirDataEstimate air_held_;      // last AirDataEstimate that passed the checks
+    AttitudeEstimate att_held_;     // last AttitudeEstimate that passed the checks
+    DeniedReason denied_reason_{DeniedReason::kNone};
+    bool reacquired_event_{false};
+    int consecutive_rejections_{0};
+    double t_denied_s_{0.0};
+    int candidate_count_{0};        // consecutive fixes counted towards re-acquisition
+    double candidate_t_s_{0.0};
+    GnssSample candidate_;
+    std::uint64_t reacquisitions_{0};
+    std::uint64_t gate_accepted_{0};
+    double gate_d2_max_accepted_{0.0};
+    double gate_d2_last_{0.0};
 };
 
 denied::HorizontalRule parse_horizontal_rule(const config::Config& variant);

@@ -25,7 +25,9 @@ struct ChainOptions {
     int last_fix_step{-1};       // fixes after this step are dropped (-1: never)
     int dead_at_step{-1};        // call set_gnss_publisher_dead() before this step (-1: never)
     YAML::Node attitude_override;  // merged into tuning.attitude (e.g. r, q_per_step)
+    YAML::Node position_override;  // merged into tuning.position (e.g. gnss_integrity)
     std::function<void(int, synth::Sample&)> edit;  // optional: alters the sample of step k before the filters see it
+    std::function<void(int, const PositionFilter&)> inspect;  // optional: called after the position step of step k
 };
 
 struct ChainRun {
@@ -57,6 +59,7 @@ inline YAML::Node load_tuning_node(bool reference_init) {
 inline ChainRun run_chain(const synth::Scenario& sc, const ChainOptions& o, std::uint64_t seed) {
     YAML::Node tn = load_tuning_node(o.reference_init);
     if (o.attitude_override) merge(tn["attitude"], o.attitude_override);
+    if (o.position_override) merge(tn["position"], o.position_override);
     const config::Config tuning = config::Config::wrap(tn, "tuning.yaml");
     const config::Config variant = config::Config::load(source_path("config/nav/variants/" + o.variant + ".yaml"));
     const rnd::Stream root = rnd::Stream::derive(seed, 0, "nav_test");
@@ -86,6 +89,7 @@ inline ChainRun run_chain(const synth::Scenario& sc, const ChainOptions& o, std:
             run.att.push_back(att.step(uk, t, s.imu, s.mag, run.pos.back()));
             run.pos.push_back(pos.step(uk, t, s.imu, s.gnss, run.air.back(), run.att.back()));
         }
+        if (o.inspect) o.inspect(k, pos);
         run.data.push_back(s);
     }
     return run;
