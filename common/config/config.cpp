@@ -7,6 +7,29 @@
 namespace gdnav::config {
 
 namespace {
+std::string one_line(const std::string& s) {
+    std::string out;
+    out.reserve(s.size());
+    for (const char c : s) {
+        const auto u = static_cast<unsigned char>(c);
+        if (u >= 0x20 && u != 0x7f) {
+            out.push_back(c);
+        } else if (c == '\n') {
+            out += "\\n";
+        } else if (c == '\r') {
+            out += "\\r";
+        } else if (c == '\t') {
+            out += "\\t";
+        } else {
+            static const char* hex = "0123456789abcdef";
+            out += "\\x";
+            out.push_back(hex[u >> 4]);
+            out.push_back(hex[u & 15]);
+        }
+    }
+    return out;
+}
+
 std::string fmt_num(double v) {
     if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
     std::ostringstream os;
@@ -18,7 +41,28 @@ std::string join(const std::vector<std::string>& v) {
     for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
     return s;
 }
+// Every mapping key is a plain scalar and appears once (yaml-cpp keeps duplicates and returns the first on lookup,
+// so a repeated key would silently ignore the second value).
+void check_keys(const YAML::Node& node, const std::string& path, const std::string& origin) {
+    if (node.IsMap()) {
+        std::set<std::string> seen;
+        for (const auto& kv : node) {
+            if (!kv.first.IsScalar())
+                throw ConfigError("config error: " + origin + ": key '" + path +
+                                  "': has a key that is not a plain name");
+            const std::string k = kv.first.Scalar();
+            const std::string p = path.empty() ? k : path + "." + k;
+            if (!seen.insert(k).second)
+                throw ConfigError("config error: " + origin + ": key '" + p + "': duplicate key");
+            check_keys(kv.second, p, origin);
+        }
+    } else if (node.IsSequence()) {
+        for (std::size_t i = 0; i < node.size(); ++i) check_keys(node[i], path + "[" + std::to_string(i) + "]", origin);
+    }
+}
 }  // namespace
+
+ConfigError::ConfigError(const std::string& what) : std::runtime_error(one_line(what)) {}
 
 std::string Range::str() const {
     return (std::isinf(lo) ? std::string("(") : std::string("[")) + fmt_num(lo) + ", " + fmt_num(hi) +
@@ -45,6 +89,7 @@ Config Config::parse(const std::string& text, const std::string& origin) {
                           ": " + e.msg);
     }
     if (!n.IsMap()) throw ConfigError("config error: " + origin + ": top level must be a mapping of keys");
+    check_keys(n, "", origin);
     auto st = std::make_shared<State>();
     st->origin = origin;
     return Config(n, st, "");
@@ -235,6 +280,19 @@ std::vector<std::string> Config::get_strings(std::string_view key) const {
         out.push_back(n[i].as<std::string>());
     }
     return out;
+}
+
+std::filesystem::path Config::get_file(std::string_view key, const std::filesystem::path& dir) const {
+    const std::string v = get_string(key);
+    const std::filesystem::path p = dir / v;
+    std::error_code ec;
+    if (v.empty() || !std::filesystem::is_regular_file(p, ec)) fail(key, "no such file '" + p.string() + "'");
+    return p;
+}
+
+std::filesystem::path Config::get_file(std::string_view key, const std::string& fallback,
+                                       const std::filesystem::path& dir) const {
+    return has(key) ? get_file(key, dir) : dir / fallback;
 }
 
 void Config::check_unread(const YAML::Node& node, const std::string& path) const {

@@ -2,6 +2,9 @@
 // YAML configuration with validation. Every read names its key and allowed range; a bad file or value throws
 // ConfigError with one line naming the file, the key and what is allowed. `finish()` rejects keys nobody read
 // (typos), so a config is fully validated by constructing and configuring its components before anything starts.
+// Numbers are always finite: NaN, .inf and -.inf are rejected by every numeric getter whatever the range. Parsing
+// rejects duplicate keys and keys that are not plain scalars. A file that has several sections read by different
+// components must still be read and finished whole by each reader (e.g. config/nav/tuning.yaml, nav_components.cpp).
 #include <cstdint>
 #include <filesystem>
 #include <limits>
@@ -18,9 +21,12 @@
 
 namespace gdnav::config {
 
+// The message is always one line: control characters (a newline in a quoted value or key, raw bytes of a garbage
+// file quoted by the YAML parser) are written as \n, \r, \t or \xNN.
 class ConfigError : public std::runtime_error {
 public:
-    using std::runtime_error::runtime_error;
+    explicit ConfigError(const std::string& what);
+    explicit ConfigError(const char* what) : ConfigError(std::string(what)) {}
 };
 
 struct Range {
@@ -67,6 +73,11 @@ public:
     Eigen::Vector3d get_vec3(std::string_view key, Range r = {}) const;
     Eigen::Matrix3d get_mat3(std::string_view key, Range r = {}) const;  // 3 rows of 3
     std::vector<std::string> get_strings(std::string_view key) const;
+    // A file named relative to `dir` (e.g. `aircraft: aircraft/mugin.yaml` relative to config/): returns dir / value
+    // and fails naming this key when it is not an existing regular file.
+    std::filesystem::path get_file(std::string_view key, const std::filesystem::path& dir) const;
+    std::filesystem::path get_file(std::string_view key, const std::string& fallback,
+                                   const std::filesystem::path& dir) const;
 
     // Throws for any key below this node that no getter read (recursively for mappings that were read).
     void finish() const;

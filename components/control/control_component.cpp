@@ -13,7 +13,7 @@ class ControlComponent final : public runtime::Component {
 public:
     using Component::Component;
     void configure(const config::Config& cfg, const runtime::RunInfo&, rnd::Stream&) override {
-        const auto file = runtime::config_dir() / cfg.get_string("autopilot", "control/mugin_autopilot.yaml");
+        const auto file = cfg.get_file("autopilot", "control/mugin_autopilot.yaml", runtime::config_dir());
         autopilot_.configure(config::Config::load(file));
     }
     void step(const runtime::StepContext& ctx) override {

@@ -11,6 +11,7 @@ public:
     using Component::Component;
     void configure(const config::Config&, const runtime::RunInfo&, rnd::Stream&) override {}
     void step(const runtime::StepContext&) override {
+        if (!truth_.available()) return;  // hold the last estimates
         const auto& t = truth_.get();
         auto& a = air_.value();
         a.tas_mps(t.tas_mps());

@@ -56,9 +56,10 @@ public:
 
     void configure(const Config& cfg, const runtime::RunInfo& run, rnd::Stream& stream) override {
         const auto dir = runtime::config_dir();
-        const AircraftModel aircraft = AircraftModel::load(dir / cfg.get_string("aircraft", "aircraft/mugin.yaml"));
+        const auto aircraft_file = cfg.get_file("aircraft", "aircraft/mugin.yaml", dir);
+        const AircraftModel aircraft = AircraftModel::load(aircraft_file);
         EnvironmentParams env;
-        env.magnetic = earth::MagneticModel::load(dir / cfg.get_string("magnetic_model", "earth/magnetic_wisconsin.yaml"));
+        env.magnetic = earth::MagneticModel::load(cfg.get_file("magnetic_model", "earth/magnetic_wisconsin.yaml", dir));
         if (auto t = cfg.optional_child("turbulence")) {
             env.turbulence = TurbulenceParams::from_config(*t);
             t->finish();
@@ -81,10 +82,10 @@ public:
         const Config init = cfg.child("initial");
         const double lat = init.get_angle_deg("lat_deg", {-80.0, 80.0});
         const double lon = init.get_angle_deg("lon_deg", {-360.0, 360.0});
-        const double mass = init.get_double("mass_kg", Range::positive());
+        const double mass = init.get_double("mass_kg", Range{1.0e-3, 1.0e6});  // as the aircraft file's masses
         double tas = 0.0, Hp = 0.0, bearing = 0.0;
         if (init.has("mission")) {
-            const auto m = guidance::load_mission(dir / init.get_string("mission"));
+            const auto m = guidance::load_mission(init.get_file("mission", dir));
             const auto f = guidance::initial_flight(m);
             if (!f) init.fail("mission", "the mission's first operation does not hold airspeed, Hp and bearing");
             tas = f->airspeed_mps;
@@ -99,7 +100,8 @@ public:
             fp_.emplace(aircraft, env, stream.child("turbulence"));
             fp_->initialize_trimmed(lat, lon, Hp, tas, bearing, mass, run.t0_s);
         } catch (const std::exception& e) {
-            cfg.fail("initial", std::string("cannot start the flight: ") + e.what());
+            // Names the aircraft file too: a valid-looking aircraft that cannot fly is a likely cause.
+            cfg.fail("initial", "cannot start the flight (aircraft " + aircraft_file.string() + "): " + e.what());
         }
         u_ = fp_->trim().controls;
     }

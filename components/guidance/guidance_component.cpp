@@ -17,7 +17,7 @@ public:
     using Component::Component;
     void configure(const config::Config& cfg, const runtime::RunInfo&, rnd::Stream&) override {
         Mission m = cfg.node()["mission"].IsMap() ? parse_mission(cfg.child("mission"))
-                                                  : load_mission(runtime::config_dir() / cfg.get_string("mission"));
+                                                  : load_mission(cfg.get_file("mission", runtime::config_dir()));
         try {
             guidance_.emplace(m);
         } catch (const std::invalid_argument& e) {

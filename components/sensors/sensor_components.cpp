@@ -23,7 +23,7 @@ using runtime::to_vec3;
 
 // Loads the suite named in the component section and applies the run's timing and the section's overrides.
 SensorSuiteParams load_suite(const config::Config& cfg, const runtime::RunInfo& run) {
-    const auto file = runtime::config_dir() / cfg.get_string("suite", "sensors/suite.yaml");
+    const auto file = cfg.get_file("suite", "sensors/suite.yaml", runtime::config_dir());
     SensorSuiteParams s = load_sensor_suite(file);
     s.inertial.dt_s = run.dt_s;
     s.mag.dt_s = run.dt_s;
@@ -37,9 +37,8 @@ template <class Grade, class Parse>
 void override_grade(const config::Config& cfg, const char* key, const char* group, Grade& grade, std::string& name,
                     Parse parse) {
     if (!cfg.has(key)) return;
-    name = cfg.get_string(key);
-    const auto dir = (runtime::config_dir() / cfg.get_string("suite", "sensors/suite.yaml")).parent_path();
-    grade = parse(load_grade_file(dir, group, name));
+    const auto dir = cfg.get_file("suite", "sensors/suite.yaml", runtime::config_dir()).parent_path();
+    grade = parse(load_grade(cfg, key, dir, group, name));
 }
 
 class InertialComponent final : public runtime::Component {
@@ -49,13 +48,15 @@ public:
         SensorSuiteParams s = load_suite(cfg, run);
         override_grade(cfg, "gyr_grade", "gyroscopes", s.inertial.gyr, s.gyr_grade, parse_gyro_grade);
         override_grade(cfg, "acc_grade", "accelerometers", s.inertial.acc, s.acc_grade, parse_acc_grade);
-        s.inertial.bias_drift_band = cfg.get_double("bias_drift_band", s.inertial.bias_drift_band, {1.0, 1e6});
+        // Same range as the suite's key (the soft pull zone needs N >= 40).
+        s.inertial.bias_drift_band = cfg.get_double("bias_drift_band", s.inertial.bias_drift_band, {40.0, 1.0e9});
         model_.configure(s.inertial, stream);
         align_errors_ = s.alignment;
         align_stream_ = stream.child("alignment");
         aligned_ = false;
     }
     void step(const runtime::StepContext& ctx) override {
+        if (!truth_.available()) return;  // no truth sample (a fault upstream): hold the last measurement
         const auto& t = truth_.get();
         InertialTruth in{to_vec3(t.f_ib_b_mps2()), to_vec3(t.w_ib_b_rps()), to_vec3(t.dw_ib_b_rps2()), t.mass_kg()};
         const ImuMeasurement m = model_.measure(ctx.k, ctx.t_s, in);
@@ -96,6 +97,7 @@ public:
         aligned_ = false;
     }
     void step(const runtime::StepContext& ctx) override {
+        if (!truth_.available()) return;  // no truth sample (a fault upstream): hold the last measurement
         const auto& t = truth_.get();
         MagTruth in{runtime::to_quat(t.q_nb()), to_vec3(t.b_n_nT())};
         const MagMeasurement m = model_.measure(ctx.k, ctx.t_s, in);
@@ -130,6 +132,7 @@ public:
         model_.configure(s.air, stream);
     }
     void step(const runtime::StepContext& ctx) override {
+        if (!truth_.available()) return;  // no truth sample (a fault upstream): hold the last measurement
         const auto& t = truth_.get();
         const AirMeasurement m = model_.measure(ctx.k, ctx.t_s, {t.tas_mps(), t.aoa_rad(), t.aos_rad()});
         out_.value().tas_mps(m.tas_mps);
@@ -152,6 +155,7 @@ public:
         model_.configure(s.atm, stream);
     }
     void step(const runtime::StepContext& ctx) override {
+        if (!truth_.available()) return;  // no truth sample (a fault upstream): hold the last measurement
         const auto& t = truth_.get();
         const AtmMeasurement m = model_.measure(ctx.k, ctx.t_s, {t.p_Pa(), t.T_K()});
         out_.value().p_Pa(m.p_Pa);
@@ -175,6 +179,7 @@ public:
         model_.configure(s.gnss, stream);
     }
     void step(const runtime::StepContext& ctx) override {
+        if (!truth_.available()) return;  // no truth sample (a fault upstream): hold the last measurement
         const auto& t = truth_.get();
         const GnssMeasurement m =
             model_.measure(ctx.k, ctx.t_s, {t.lon_rad(), t.lat_rad(), t.h_m(), to_vec3(t.v_n_mps())});

@@ -22,7 +22,8 @@ Propulsion Propulsion::from_config(const config::Config& c) {
     for (std::size_t i = 1; i < j.size(); ++i)
         if (!(j[i] > j[i - 1])) c.fail("advance_ratio", "must be strictly increasing");
     p.ct = Table1D(j, c.get_doubles("thrust_coefficient", j.size(), j.size(), Range{-1.0, 1.0}));
-    p.cp = Table1D(j, c.get_doubles("power_coefficient", j.size(), j.size(), Range{-1.0, 1.0}));
+    // Cp > 0: the absorbed power rho n^3 D^5 Cp must grow with the engine speed n (solve_speed_rps); C_T may be < 0.
+    p.cp = Table1D(j, c.get_doubles("power_coefficient", j.size(), j.size(), Range{1.0e-6, 1.0}));
     return p;
 }
 

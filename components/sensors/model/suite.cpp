@@ -25,17 +25,22 @@ std::string available_grades(const std::filesystem::path& dir) {
     return s.empty() ? "none" : s;
 }
 
-// Reads `<group>: {grade: <name>, ...}` and returns the grade name.
-std::string grade_name(const Config& group) {
-    const std::string g = group.get_string("grade");
+}  // namespace
+
+Config load_grade(const Config& section, std::string_view key, const std::filesystem::path& grades_dir,
+                  const std::string& group, std::string& name) {
+    const std::string g = section.get_string(key);
     const bool ok = !g.empty() && std::all_of(g.begin(), g.end(), [](char c) {
         return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
     });
-    if (!ok) group.fail("grade", "must be a grade name (letters, digits, '_', '-'), got '" + g + "'");
-    return g;
+    if (!ok) section.fail(key, "must be a grade name (letters, digits, '_', '-'), got '" + g + "'");
+    const auto file = grades_dir / group / (g + ".yaml");
+    if (!std::filesystem::exists(file))
+        section.fail(key, "no grade '" + g + "' for " + group + ": no file " + file.string() +
+                              " (available: " + available_grades(grades_dir / group) + ")");
+    name = g;
+    return load_grade_file(grades_dir, group, g);
 }
-
-}  // namespace
 
 Config load_grade_file(const std::filesystem::path& grades_dir, const std::string& group, const std::string& grade) {
     const auto file = grades_dir / group / (grade + ".yaml");
@@ -54,8 +59,8 @@ PlatformParams parse_platform(const Config& cfg) {
     p.mounting_estimate_error_rad = cfg.get_angle_deg("mounting_estimate_error_deg", Range{0.0, 30.0});
     p.cg_full_m = cfg.get_vec3("cg_full_m", Range{-10.0, 10.0});
     p.cg_empty_m = cfg.get_vec3("cg_empty_m", Range{-10.0, 10.0});
-    p.mass_full_kg = cfg.get_double("mass_full_kg", Range::positive());
-    p.mass_empty_kg = cfg.get_double("mass_empty_kg", Range{0.0, p.mass_full_kg});
+    p.mass_full_kg = cfg.get_double("mass_full_kg", Range{1.0e-3, 1.0e6});  // as the aircraft file
+    p.mass_empty_kg = cfg.get_double("mass_empty_kg", Range{1.0e-3, p.mass_full_kg});
     cfg.finish();
     return p;
 }
@@ -69,14 +74,14 @@ SensorSuiteParams parse_sensor_suite(const Config& cfg, const std::filesystem::p
     const double t0 = cfg.get_double("start_time_s", Range{-1.0e7, 1.0e7});
 
     const Config gyr = cfg.child("gyroscopes");
-    s.gyr_grade = grade_name(gyr);
+    const Config gyr_file = load_grade(gyr, "grade", grades_dir, "gyroscopes", s.gyr_grade);
     gyr.finish();
-    s.inertial.gyr = parse_gyro_grade(load_grade_file(grades_dir, "gyroscopes", s.gyr_grade));
+    s.inertial.gyr = parse_gyro_grade(gyr_file);
 
     const Config acc = cfg.child("accelerometers");
-    s.acc_grade = grade_name(acc);
+    const Config acc_file = load_grade(acc, "grade", grades_dir, "accelerometers", s.acc_grade);
     acc.finish();
-    s.inertial.acc = parse_acc_grade(load_grade_file(grades_dir, "accelerometers", s.acc_grade));
+    s.inertial.acc = parse_acc_grade(acc_file);
 
     // Paper: 100 (baseline), 300 and 1000. The soft pull zone (20 steps) needs L >= 40.
     s.inertial.bias_drift_band = cfg.get_double("bias_drift_band", Range{40.0, 1.0e9});
@@ -85,26 +90,26 @@ SensorSuiteParams parse_sensor_suite(const Config& cfg, const std::filesystem::p
     s.alignment = AlignmentErrors::from_config(cfg.child("alignment"));
 
     const Config mag = cfg.child("magnetometers");
-    s.mag_grade = grade_name(mag);
+    const Config mag_file = load_grade(mag, "grade", grades_dir, "magnetometers", s.mag_grade);
     mag.finish();
-    s.mag.grade = parse_mag_grade(load_grade_file(grades_dir, "magnetometers", s.mag_grade));
+    s.mag.grade = parse_mag_grade(mag_file);
     s.mag.dt_s = dt;
 
     const Config air = cfg.child("air_data");
-    s.air_grade = grade_name(air);
+    const Config air_file = load_grade(air, "grade", grades_dir, "air_data", s.air_grade);
     air.finish();
-    s.air.grade = parse_air_grade(load_grade_file(grades_dir, "air_data", s.air_grade));
+    s.air.grade = parse_air_grade(air_file);
 
     const Config atm = cfg.child("atmospheric");
-    s.atm_grade = grade_name(atm);
+    const Config atm_file = load_grade(atm, "grade", grades_dir, "atmospheric", s.atm_grade);
     atm.finish();
-    s.atm.grade = parse_atm_grade(load_grade_file(grades_dir, "atmospheric", s.atm_grade));
+    s.atm.grade = parse_atm_grade(atm_file);
 
     const Config gnss = cfg.child("gnss");
-    s.gnss_grade = grade_name(gnss);
+    const Config gnss_file = load_grade(gnss, "grade", grades_dir, "gnss", s.gnss_grade);
     if (gnss.has("loss_time_s")) s.gnss.loss_time_s = gnss.get_double("loss_time_s", Range{-1.0e7, 1.0e7});
     gnss.finish();
-    s.gnss.grade = parse_gnss_grade(load_grade_file(grades_dir, "gnss", s.gnss_grade));
+    s.gnss.grade = parse_gnss_grade(gnss_file);
     s.gnss.t0_s = t0;
     s.gnss.dt_s = dt;
     const double steps_per_fix = s.gnss.grade.fix_period_s / dt;

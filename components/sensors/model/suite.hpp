@@ -94,6 +94,10 @@ SensorSuiteParams parse_sensor_suite(const config::Config& suite_cfg, const std:
 // Loads `<grades_dir>/<group>/<grade>.yaml`; an unknown grade names the file and lists the available grades.
 config::Config load_grade_file(const std::filesystem::path& grades_dir, const std::string& group,
                                const std::string& grade);
+// Reads the grade name at `key` of `section` (letters, digits, '_', '-') into `name` and loads that grade file; a bad
+// or unknown grade is an error naming `key` (and listing the available grades).
+config::Config load_grade(const config::Config& section, std::string_view key, const std::filesystem::path& grades_dir,
+                          const std::string& group, std::string& name);
 PlatformParams parse_platform(const config::Config& cfg);
 
 // Every numeric parameter of a suite as (dotted name, SI value), in a fixed order, e.g. ("gyr.bias_offset",
