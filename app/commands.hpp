@@ -15,5 +15,12 @@ CLI::App* add_montecarlo_command(CLI::App& app, CliContext& ctx, CommandRunner& 
 CLI::App* add_report_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
 CLI::App* add_import_log_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
 CLI::App* add_export_log_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
+CLI::App* add_fault_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
+
+// What `gdnav validate --scenario S` does, callable in-process (tests/integration/config_fuzz_test.cpp): loads the
+// scenario (name in config/scenarios or YAML file), constructs and configures every component (each reads and checks
+// its files) and orders the step graph. Throws config::ConfigError, one line naming file and key, for anything
+// invalid; returns the summary line ("<file>: valid; N components, ...").
+std::string validate_scenario(const std::string& scenario, const runtime::ComponentRegistry& reg);
 
 }  // namespace gdnav::app

@@ -32,6 +32,7 @@ CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
         int domain{-1};
         std::vector<std::string> external;
         double join_timeout_s{0.0};
+        std::string faults_file;
         RunRewrites rw;
         scenario::Overrides o;
     };
@@ -56,6 +57,8 @@ CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
         ->delimiter(',');
     sub->add_option("--join-timeout", a->join_timeout_s, "seconds to wait for --external members (run.join_timeout_s)")
         ->check(CLI::Range(1.0, 86400.0));
+    sub->add_option("--faults", a->faults_file,
+                    "apply the fault list of this file instead of the scenario's (e.g. a run's <out>/faults.yaml)");
     sub->add_option("--record", a->rw.record, "record these topics (TOPIC[,TOPIC...] or all) to <out>/record")
         ->delimiter(',');
     sub->add_option("--replay", a->rw.replay_dir, "replay topics recorded in this run directory (docs/replay.md)");
@@ -72,6 +75,7 @@ CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
         if (a->domain >= 0) o.domain_id = a->domain;
         if (!a->external.empty()) o.external = a->external;
         if (sub->count("--join-timeout")) o.join_timeout_s = a->join_timeout_s;
+        if (!a->faults_file.empty()) o.faults_file = a->faults_file;
         // With --replay and no --scenario, the replayed run's own configuration is the base.
         const bool replay_base = !a->rw.replay_dir.empty() && !sub->count("--scenario");
         RunConfig rc = [&] {
@@ -97,12 +101,14 @@ CLI::App* add_component_command(CLI::App& app, CliContext& ctx, CommandRunner& r
     struct Args {
         std::string names, config;
         bool free_running{false};
+        bool rejoin{false};
     };
     auto a = std::make_shared<Args>();
     auto* sub = app.add_subcommand("component", "run one or more components (comma-separated) in this process");
     sub->add_option("names", a->names, "component name(s) from the run config")->required();
     sub->add_option("--config", a->config, "run config (YAML)")->required();
     sub->add_flag("--free-running", a->free_running, "not in the lockstep barrier; inputs use the latest samples");
+    sub->add_flag("--rejoin", a->rejoin, "come back into a running run after being declared dead (docs/faults.md)");
     run = [a, &ctx]() {
         setup_logging(a->names, ctx.log_level);
         install_stop_signal_handlers();
@@ -110,6 +116,8 @@ CLI::App* add_component_command(CLI::App& app, CliContext& ctx, CommandRunner& r
         auto members = rc.build(ctx.registry, split_topics(a->names));
         HostOptions ho;
         ho.free_running = a->free_running;
+        ho.rejoin = a->rejoin;
+        ho.rebuild = [&rc, &ctx](const std::string& name) { return rc.build_one(ctx.registry, name); };
         DdsHost host(rc, std::move(members), ho);
         return host.run();
     };
@@ -130,21 +138,25 @@ CLI::App* add_clock_command(CLI::App& app, CliContext& ctx, CommandRunner& run) 
     return sub;
 }
 
+std::string validate_scenario(const std::string& scenario, const ComponentRegistry& reg) {
+    const RunConfig rc = RunConfig::load(resolve_scenario(scenario));
+    auto comps = rc.build(reg);
+    std::vector<Component*> raw;
+    for (auto& c : comps) raw.push_back(c.get());
+    const Graph g = build_graph(raw);
+    std::string order;
+    for (auto* c : g.order) order += (order.empty() ? "" : " -> ") + c->name();
+    return rc.origin + ": valid; " + std::to_string(comps.size()) + " components, " + std::to_string(rc.info.steps) +
+           " steps; step order: " + order;
+}
+
 CLI::App* add_validate_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
     auto scenario = std::make_shared<std::string>();
     auto* sub = app.add_subcommand("validate", "validate a scenario / run config without running it");
     sub->add_option("--scenario", *scenario, "scenario name or YAML file")->required();
     run = [scenario, &ctx]() {
         setup_logging("gdnav", ctx.log_level);
-        const RunConfig rc = RunConfig::load(resolve_scenario(*scenario));
-        auto comps = rc.build(ctx.registry);
-        std::vector<Component*> raw;
-        for (auto& c : comps) raw.push_back(c.get());
-        const Graph g = build_graph(raw);
-        std::string order;
-        for (auto* c : g.order) order += (order.empty() ? "" : " -> ") + c->name();
-        spdlog::info("{}: valid; {} components, {} steps; step order: {}", rc.origin, comps.size(), rc.info.steps,
-                     order);
+        spdlog::info("{}", validate_scenario(*scenario, ctx.registry));
         return 0;
     };
     return sub;

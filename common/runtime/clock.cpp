@@ -9,8 +9,10 @@
 #include <fastdds/dds/core/condition/WaitSet.hpp>
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
 #include <spdlog/spdlog.h>
+#include <yaml-cpp/yaml.h>
 
 #include "runtime/dds_context.hpp"
+#include "runtime/graph.hpp"
 #include "runtime/lockstep.hpp"
 #include "runtime/messages.hpp"
 #include "runtime/process_signals.hpp"
@@ -35,6 +37,7 @@ struct Member {
     double last_seen_s{0.0};
     std::uint64_t dead_at_step{0};
     std::string dead_reason;
+    std::uint32_t faults_version{0};  // fault schedule the member has adopted
 };
 }  // namespace
 
@@ -47,6 +50,7 @@ struct Clock::Impl {
     DataWriter* status_writer{nullptr};
     DataReader* done_reader{nullptr};
     DataReader* status_reader{nullptr};
+    DataReader* fault_reader{nullptr};
     WaitSet waitset;
 
     std::map<std::string, Member> members;
@@ -61,11 +65,19 @@ struct Clock::Impl {
     std::set<std::string> refused;  // members refused for a protocol version mismatch (logged once)
     bool tick_pending{false};
     std::string host_id{host_identity()};
+    // The fault schedule: the run config's, grown by faults injected live (gdnav fault). Members acknowledge each
+    // version (ComponentStatus.faults_version) before the clock lets the run reach the step a new fault acts at.
+    faults::FaultSchedule schedule{rc.faults};
+    std::uint32_t faults_version{0};
+    bool adopting{false};
+    std::vector<std::string> rejoined;  // members that came back after being declared dead
+    double adopt_start_s{0.0};
 
     msg::Tick tick;
     msg::StepDone done_in;
     msg::ComponentStatus status_in, status_out;
     msg::RunControl control;
+    msg::FaultRequest fault_in;
 
     Impl(const RunConfig& r, ClockOptions o) : rc(r), opt(std::move(o)) {
         if (opt.members.empty()) opt.members = rc.member_names();
@@ -81,7 +93,8 @@ struct Clock::Impl {
         status_writer = dds->writer(topics::kStatus, message_ops<msg::ComponentStatus>(), kControlWriterProfile);
         done_reader = dds->reader(topics::kStepDone, message_ops<msg::StepDone>(), kControlReaderProfile);
         status_reader = dds->reader(topics::kStatus, message_ops<msg::ComponentStatus>(), kControlReaderProfile);
-        for (DataReader* r : {done_reader, status_reader}) {
+        fault_reader = dds->reader(topics::kFaultRequest, message_ops<msg::FaultRequest>(), kControlReaderProfile);
+        for (DataReader* r : {done_reader, status_reader, fault_reader}) {
             r->get_statuscondition().set_enabled_statuses(StatusMask::data_available());
             waitset.attach_condition(r->get_statuscondition());
         }
@@ -96,7 +109,9 @@ struct Clock::Impl {
         status_out.member(kClockName);
         status_out.host(host_id);
         status_out.kind(msg::STATUS_HEARTBEAT);
+        status_out.message("");
         status_out.protocol_version(msg::LOCKSTEP_PROTOCOL_VERSION);
+        status_out.faults_version(faults_version);
         status_writer->write(&status_out);
         // While waiting inside a step, re-send the current Tick: members see the clock alive and the dead set.
         if (phase == Phase::Running && now - last_tick_sent_s > kHeartbeatPeriodS && !tick_pending) send_tick(now);
@@ -124,6 +139,8 @@ struct Clock::Impl {
         control.done_every(rc.done_every());
         control.member_timeout_s(rc.member_timeout_s);
         control.seed(rc.info.seed);
+        control.faults(schedule.to_yaml());
+        control.faults_version(faults_version);
         control.members().clear();
         for (Member* m : table) {
             msg::MemberInfo mi;
@@ -167,8 +184,13 @@ struct Clock::Impl {
                 spdlog::info("free-running member '{}' joins (run not reproducible)", name);
             }
             Member& m = it->second;
+            if (m.dead && status_in.message().to_string() == "rejoin" && phase == Phase::Running) {
+                accept_rejoin(m, status_in.host().to_string(), now);
+                continue;
+            }
             if (m.dead) continue;
             m.last_seen_s = now;
+            m.faults_version = std::max(m.faults_version, status_in.faults_version());
             if (!m.present) {
                 m.present = true;
                 m.host = status_in.host().to_string();
@@ -230,9 +252,15 @@ struct Clock::Impl {
                 declare_dead(*m, "no heartbeat for " + fmt::format("{:.1f}", now - m->last_seen_s) + " s", now);
     }
 
+    // Steps a member has completed, counting the steps a scheduled kill keeps it from (it is not stepped then).
+    std::uint64_t effective_done(const Member& m) const {
+        if (schedule.empty() || !schedule.killed(m.name, m.done_count)) return m.done_count;
+        return std::min(schedule.alive_again(m.name, m.done_count), rc.info.steps);
+    }
+
     bool all_done() const {
         for (const Member* m : table)
-            if (!m->free && !m->dead && m->done_count <= current) return false;
+            if (!m->free && !m->dead && effective_done(*m) <= current) return false;
         return true;
     }
 
@@ -240,15 +268,135 @@ struct Clock::Impl {
     std::uint64_t min_done() const {
         std::uint64_t m = UINT64_MAX;
         for (const Member* x : table)
-            if (!x->free && !x->dead) m = std::min(m, x->done_count);
+            if (!x->free && !x->dead) m = std::min(m, effective_done(*x));
         return m == UINT64_MAX ? rc.info.steps : m;
     }
 
     std::string waiting_for() const {
         std::string s;
         for (const Member* m : table)
-            if (!m->free && !m->dead && m->done_count <= current) s += (s.empty() ? "" : ", ") + m->name;
+            if (!m->free && !m->dead && effective_done(*m) <= current) s += (s.empty() ? "" : ", ") + m->name;
         return s;
+    }
+
+    // An essential member killed by a scheduled fault at the step about to start ends the run, as its death would.
+    // A fault injected live (gdnav fault): stamped with the first step no member can have reached, validated, sent
+    // to every member; the run waits at the current step until all live members have adopted it.
+    void read_fault_requests(double now) {
+        SampleInfo info;
+        while (fault_reader->take_next_sample(&fault_in, &info) == ReturnCode_t::RETCODE_OK) {
+            if (!info.valid_data || fault_in.run_id() != rc.info.run_index) continue;
+            const std::string id = std::to_string(fault_in.request_id());
+            const std::string text = fault_in.fault().to_string();
+            std::string error;
+            if (phase != Phase::Running) error = "the run is not running yet (wait for step 0)";
+            std::uint64_t at = current + rc.window_steps + 2;
+            try {
+                const YAML::Node e = YAML::Load(text);
+                if (e.IsMap() && e["kind"] && e["kind"].as<std::string>() == "delay" && e["steps"])
+                    at += e["steps"].as<std::uint64_t>();  // the members' history of the delayed samples starts now
+            } catch (const std::exception&) {
+                // malformed: add_live names the problem
+            }
+            if (error.empty() && at >= rc.info.steps) error = "the run ends before step " + std::to_string(at);
+            if (error.empty()) {
+                try {
+                    std::map<std::string, faults::MemberPorts> ports;
+                    for (const Member* m : table) {
+                        auto& p = ports[m->name];
+                        p.outputs = split_topics(m->outputs);
+                        p.external = rc.is_external(m->name) || m->free;
+                    }
+                    const faults::Fault& f = schedule.add_live(text, at, rc.info, ports);
+                    ++faults_version;
+                    adopting = true;
+                    adopt_start_s = now;
+                    send_control(msg::RUN_FAULTS, "");
+                    write_faults();
+                    const std::string what = "fault " + id + " accepted: " + f.describe() + " (step " +
+                                             std::to_string(f.from_step) + ")";
+                    spdlog::warn("{}", what);
+                    send_clock_status(msg::STATUS_MODE, what);
+                    continue;
+                } catch (const std::exception& e) {
+                    error = e.what();
+                }
+            }
+            spdlog::error("fault {} refused: {}", id, error);
+            send_clock_status(msg::STATUS_ERROR, "fault " + id + " refused: " + error);
+        }
+    }
+
+    // A member declared dead is back (gdnav component --rejoin), matched with the others: it computes again from the
+    // first step no member can have reached; every member learns it through a FAULTS schedule with a rejoin entry,
+    // and the run waits until all (the newcomer too) have adopted it.
+    void accept_rejoin(Member& m, const std::string& host, double now) {
+        const std::uint64_t at = current + rc.window_steps + 2;
+        if (at >= rc.info.steps) return;
+        std::map<std::string, faults::MemberPorts> ports;
+        for (const Member* x : table) ports[x->name].outputs = split_topics(x->outputs);
+        const faults::Fault& f = schedule.add_live("{target: " + m.name + ", kind: rejoin}", at, rc.info, ports);
+        m.dead = false;
+        m.dead_reason.clear();
+        m.host = host;
+        m.last_seen_s = now;
+        m.done_count = f.from_step;
+        m.faults_version = 0;
+        for (std::size_t i = 0; i < table.size(); ++i)
+            if (table[i] == &m) dead_mask &= ~(1ULL << i);
+        ++faults_version;
+        adopting = true;
+        adopt_start_s = now;
+        send_control(msg::RUN_FAULTS, "");
+        write_faults();
+        rejoined.push_back(m.name);
+        spdlog::warn("member '{}' rejoins from {} at step {} (t = {:.2f} s)", m.name, host, f.from_step,
+                     rc.info.time_of(f.from_step));
+    }
+
+    bool all_adopted() const {
+        for (const Member* m : table)
+            if (!m->dead && !m->free && m->faults_version < faults_version) return false;
+        return true;
+    }
+
+    void send_clock_status(msg::StatusKind kind, const std::string& message) {
+        status_out.run_id(rc.info.run_index);
+        status_out.step(current);
+        status_out.t_s(rc.info.time_of(current));
+        status_out.member(kClockName);
+        status_out.host(host_id);
+        status_out.kind(kind);
+        status_out.message(message.substr(0, 1024));
+        status_out.protocol_version(msg::LOCKSTEP_PROTOCOL_VERSION);
+        status_out.faults_version(faults_version);
+        status_writer->write(&status_out);
+    }
+
+    // <out>/faults.yaml: the schedule as applied (the run config's faults and those injected live, with the step
+    // they took effect at), for `gdnav run --faults FILE` to reproduce the run.
+    void write_faults() const {
+        if (rc.out_dir.empty() || schedule.empty()) return;
+        std::error_code ec;
+        std::filesystem::create_directories(rc.out_dir, ec);
+        std::ofstream f(std::filesystem::path(rc.out_dir) / "faults.yaml");
+        f << "# The fault schedule of this run as applied (scheduled and injected live).\n"
+             "# Reproduce the run: gdnav run --scenario <run.yaml> --faults <this file> (any layout)\n"
+          << schedule.to_yaml() << "\n";
+    }
+
+    // Members may be done beyond the kill step (the barrier skips a killed member): the run ends at the kill step.
+    bool essential_killed() {
+        for (const auto& f : schedule.faults())
+            if (f.kind == faults::Kind::Kill && f.from_step <= current &&
+                std::find(rc.essential.begin(), rc.essential.end(), f.target) != rc.essential.end()) {
+                current = f.from_step;
+                aborted = true;
+                abort_reason = "essential member '" + f.target + "' killed by a scheduled fault at step " +
+                               std::to_string(current);
+                return true;
+            }
+        return false;
     }
 
     void gather(double now) {
@@ -331,8 +479,11 @@ struct Clock::Impl {
         f << "dead_members:\n";
         for (Member* m : table)
             if (m->dead) f << "  - {name: " << m->name << ", step: " << m->dead_at_step << "}\n";
+        f << "rejoined_members: [";
+        for (std::size_t i = 0; i < rejoined.size(); ++i) f << (i ? ", " : "") << rejoined[i];
+        f << "]\n";
         // A free-running member, or a member declared dead at a wall-clock moment, makes the outputs timing-dependent.
-        bool timing = false;
+        bool timing = !rejoined.empty();
         for (Member* m : table) timing = timing || m->free || m->dead;
         f << "reproducible: " << (timing ? "false" : "true") << "\n";
     }
@@ -395,8 +546,28 @@ struct Clock::Impl {
                 check_liveness(now);
             } else {
                 read_done(now);
+                read_fault_requests(now);
                 check_liveness(now);
                 if (aborted) return finish(kExitAborted, now);
+                if (adopting) {
+                    if (!all_adopted()) {
+                        if (now - adopt_start_s > rc.stall_timeout_s) {
+                            std::string late;
+                            for (const Member* m : table)
+                                if (!m->dead && !m->free && m->faults_version < faults_version)
+                                    late += (late.empty() ? "" : ", ") + m->name;
+                            aborted = true;
+                            abort_reason = "fault schedule version " + std::to_string(faults_version) +
+                                           " not adopted within " + fmt::format("{:.0f}", rc.stall_timeout_s) +
+                                           " s by: " + late;
+                            return finish(kExitAborted, now);
+                        }
+                        heartbeat(now);
+                        continue;
+                    }
+                    adopting = false;
+                    spdlog::info("fault schedule version {} adopted by every member", faults_version);
+                }
                 if (!tick_pending && all_done()) {
                     last_progress_s = now;
                     current = min_done();
@@ -404,6 +575,7 @@ struct Clock::Impl {
                         current = rc.info.steps;
                         return finish(kExitOk, now);
                     }
+                    if (!schedule.empty() && essential_killed()) return finish(kExitAborted, now);
                     if (rc.realtime > 0.0) {
                         tick_pending = true;
                     } else {

@@ -72,6 +72,11 @@ public:
     // Executor side.
     void bind(const void* data) { data_ = data; }
     void mark_lost() { lost_ = true; data_ = nullptr; }
+    // A scheduled fault: the producer is killed at this step (true) or alive again after a restart (false).
+    void set_lost(bool lost) {
+        lost_ = lost;
+        if (lost) data_ = nullptr;
+    }
 
 protected:
     const void* data_{nullptr};

@@ -12,6 +12,7 @@
 #include <spdlog/spdlog.h>
 
 #include "runtime/dds_context.hpp"
+#include "runtime/faults/input_faults.hpp"
 #include "runtime/graph.hpp"
 #include "runtime/lateness.hpp"
 #include "runtime/lockstep.hpp"
@@ -40,12 +41,18 @@ struct Channel {
     bool free{false};                      // produced by a free-running member
     bool lost{false};                      // every producer declared dead
     Lateness lateness;                     // free channels: how late the samples used were
+    std::unique_ptr<faults::InputFaults> faults;  // scheduled faults on this input (nullptr: none)
+    std::uint64_t lost_until{0};  // its producer rejoined: samples of steps below this one are lost
+    bool revived{false};
 };
 
 struct Local {
     Component* comp{nullptr};
     std::uint32_t index{0};
     std::uint64_t next_step{0};
+    bool killed{false};            // stopped by a scheduled kill (not stepped until its restart)
+    bool awaiting_rejoin{false};   // --rejoin: not stepped before the clock assigns its first step
+    std::uint64_t restarted_at{UINT64_MAX};
     std::vector<Channel*> inputs;
     std::vector<std::pair<OutputBase*, DataWriter*>> outputs;
 };
@@ -61,6 +68,8 @@ struct DdsHost::Impl {
     std::uint64_t window_steps{rc.window_steps};
     std::uint64_t done_every{rc.done_every()};
     double member_timeout_s{rc.member_timeout_s};
+    faults::FaultSchedule schedule;  // from CONFIGURE, grown by FAULTS (faults injected live)
+    std::uint32_t faults_version{0};
     // How long to wait for the member table: start-up, plus the join time of external members.
     double announce_timeout_s{rc.startup_timeout_s + (rc.external.empty() ? 0.0 : rc.join_timeout_s)};
     std::vector<std::unique_ptr<Component>> owned;
@@ -96,6 +105,7 @@ struct DdsHost::Impl {
     std::uint64_t tick_step{0};
     bool have_tick{false};
     std::uint64_t dead_mask{0};
+    std::uint64_t revived_mask{0};  // members that rejoined: their old dead bit no longer counts
     double last_clock_s{0.0};
     double start_s{0.0};
     double next_heartbeat_s{0.0};
@@ -134,6 +144,7 @@ struct DdsHost::Impl {
         for (Component* c : g.order) {
             Local l;
             l.comp = c;
+            l.awaiting_rejoin = opt.rejoin;
             for (InputBase* in : c->inputs()) {
                 auto ch = std::make_unique<Channel>();
                 ch->port = in;
@@ -198,6 +209,7 @@ struct DdsHost::Impl {
         status_out.free_running(opt.free_running);
         status_out.message(message);
         status_out.protocol_version(msg::LOCKSTEP_PROTOCOL_VERSION);
+        status_out.faults_version(faults_version);
         status_writer->write(&status_out);
     }
 
@@ -205,7 +217,9 @@ struct DdsHost::Impl {
         if (now < next_heartbeat_s) return;
         next_heartbeat_s = now + kHeartbeatPeriodS;
         const auto kind = phase == Phase::Ready ? msg::STATUS_READY : msg::STATUS_HEARTBEAT;
-        for (const auto& l : locals) send_status(l, kind, "");
+        // A rejoining member asks for its step once it is matched with the run's other members.
+        for (const auto& l : locals)
+            send_status(l, kind, l.awaiting_rejoin && phase != Phase::Announce && phase != Phase::Matching ? "rejoin" : "");
     }
 
     // Returns false when the run must end; `code` is then the exit code.
@@ -215,7 +229,15 @@ struct DdsHost::Impl {
             if (!info.valid_data || control.run_id() != ri.run_index) continue;
             switch (control.command()) {
                 case msg::RUN_CONFIGURE:
+                case msg::RUN_FAULTS:
+                    if (phase != Phase::Announce && control.command() == msg::RUN_FAULTS &&
+                        control.faults_version() > faults_version && !adopt_live_faults()) {
+                        code = kExitStartup;
+                        return false;
+                    }
                     if (phase != Phase::Announce) break;
+                    // A rejoining member may see only FAULTS samples (they carry the table as well).
+                    if (control.command() == msg::RUN_FAULTS && !opt.rejoin) break;
                     if (control.protocol_version() != msg::LOCKSTEP_PROTOCOL_VERSION) {
                         spdlog::error("the clock speaks lockstep protocol version {}, this member speaks {}; "
                                       "cannot join (docs/protocol.md, 'Versioning')",
@@ -224,6 +246,11 @@ struct DdsHost::Impl {
                         return false;
                     }
                     adopt_timing();
+                    if (!adopt_faults()) {
+                        code = kExitStartup;
+                        return false;
+                    }
+                    faults_version = control.faults_version();
                     configure_from_table();
                     // The clock is alive now: a member started long before it must not count that wait as silence.
                     last_clock_s = steady_now_s();
@@ -256,6 +283,87 @@ struct DdsHost::Impl {
         member_timeout_s = control.member_timeout_s();
     }
 
+    // The clock's fault schedule (protocol version 2). Returns false when it cannot be read.
+    bool adopt_faults() {
+        try {
+            schedule = faults::FaultSchedule::from_yaml(control.faults().to_string(), ri);
+        } catch (const std::exception& e) {
+            spdlog::error("cannot apply the clock's fault schedule: {}", e.what());
+            return false;
+        }
+        for (const auto& f : schedule.faults())
+            for (const auto& l : locals)
+                if (f.kind == faults::Kind::Kill && f.target == l.comp->name() && f.until_step < ri.steps &&
+                    !opt.rebuild) {
+                    spdlog::error("member '{}' cannot be restarted by the scheduled {} (this host cannot create it "
+                                  "anew)", l.comp->name(), f.describe());
+                    return false;
+                }
+        return true;
+    }
+
+    // A longer schedule from the clock (a fault injected live): inputs take on the new faults, and the next
+    // heartbeat acknowledges the version (the clock holds the run until every member has).
+    bool adopt_live_faults() {
+        faults::FaultSchedule longer;
+        try {
+            longer = faults::FaultSchedule::from_yaml(control.faults().to_string(), ri);
+        } catch (const std::exception& e) {
+            spdlog::error("cannot apply the clock's fault schedule: {}", e.what());
+            return false;
+        }
+        const std::size_t first = schedule.adopt(longer);
+        for (auto& ch : channels) {
+            if (ch->producers.empty()) continue;
+            if (ch->faults) {
+                ch->faults->extend(first);
+                continue;
+            }
+            std::vector<std::string> names;
+            for (auto i : ch->producers) names.push_back(table[i].name().to_string());
+            ch->faults = std::make_unique<faults::InputFaults>(schedule, ch->port->topic(), names, *ch->ops, ri);
+            if (ch->faults->empty()) ch->faults.reset();
+        }
+        for (std::size_t i = first; i < schedule.size(); ++i) {
+            const faults::Fault& f = schedule.faults()[i];
+            if (f.kind == faults::Kind::Rejoin) {
+                rejoin(f);
+                continue;
+            }
+            spdlog::warn("fault injected live: {} (step {})", f.describe(), f.from_step);
+        }
+        faults_version = control.faults_version();
+        next_heartbeat_s = 0.0;  // acknowledge at once
+        return true;
+    }
+
+    // Member f.target, declared dead, came back (gdnav component --rejoin) and computes again from step f.from_step:
+    // this host's inputs from it wait for its samples from that step on; or, if it is ours, it starts there.
+    void rejoin(const faults::Fault& f) {
+        for (auto& l : locals)
+            if (l.awaiting_rejoin && l.comp->name() == f.target) {
+                l.awaiting_rejoin = false;
+                l.next_step = f.from_step;
+                spdlog::info("member '{}' rejoins the run at step {} (t = {:.2f} s)", f.target, f.from_step,
+                             ri.time_of(f.from_step));
+            }
+        for (std::uint32_t i = 0; i < table.size(); ++i) {
+            if (table[i].name().to_string() != f.target) continue;
+            revived_mask |= 1ULL << i;
+            dead_mask &= ~(1ULL << i);
+            for (auto& ch : channels) {
+                if (!ch->lost || std::find(ch->producers.begin(), ch->producers.end(), i) == ch->producers.end())
+                    continue;
+                ch->lost = false;
+                ch->revived = true;
+                ch->lost_until = f.from_step;
+                ch->full.fill(false);
+                spdlog::info("input '{}': its producer '{}' rejoins at step {}", ch->port->topic(), f.target,
+                             f.from_step);
+            }
+        }
+    }
+
     void configure_from_table() {
         table.assign(control.members().begin(), control.members().end());
         for (auto& l : locals) {
@@ -276,6 +384,12 @@ struct DdsHost::Impl {
                         ch->producers.push_back(i);
                         ch->free = ch->free || table[i].free_running();
                     }
+                }
+                if (!schedule.empty()) {
+                    std::vector<std::string> names;
+                    for (auto i : ch->producers) names.push_back(table[i].name().to_string());
+                    ch->faults = std::make_unique<faults::InputFaults>(schedule, ch->port->topic(), names, *ch->ops, ri);
+                    if (ch->faults->empty()) ch->faults.reset();
                 }
                 if (ch->producers.empty()) {
                     spdlog::warn("member '{}': no member of this run produces '{}'; input treated as lost",
@@ -319,9 +433,10 @@ struct DdsHost::Impl {
             last_clock_s = now;
             if (!have_tick || tick.stamp().step() > tick_step) tick_step = tick.stamp().step();
             have_tick = true;
-            phase = Phase::Running;
-            if ((tick.dead_mask() | dead_mask) != dead_mask) {
-                dead_mask |= tick.dead_mask();
+            if (phase == Phase::Ready) phase = Phase::Running;  // a rejoining member sees Ticks while matching
+            const std::uint64_t dead = tick.dead_mask() & ~revived_mask;
+            if ((dead | dead_mask) != dead_mask) {
+                dead_mask |= dead;
                 apply_dead_mask();
             }
         }
@@ -362,6 +477,7 @@ struct DdsHost::Impl {
             const std::uint64_t oldest = l.next_step >= lag ? l.next_step - lag : 0;
             if (s < oldest) continue;
             if (s >= oldest + kInboxRing) {
+                if (l.killed) continue;  // a member killed by a fault does not read its inputs
                 spdlog::warn("input '{}': sample of step {} is too far ahead of step {}; dropped", ch.port->topic(), s,
                              l.next_step);
                 continue;
@@ -389,11 +505,63 @@ struct DdsHost::Impl {
                 continue;
             }
             const std::uint64_t need = k - lag;
+            if (need < ch->lost_until) {  // its producer was dead then
+                ch->port->set_lost(true);
+                continue;
+            }
+            if (ch->revived) ch->port->set_lost(false);
+            if (ch->faults && ch->faults->producer_killed(need)) {  // nothing was published: do not wait
+                ch->port->set_lost(true);
+                continue;
+            }
             const std::size_t i = need % kInboxRing;
             if (!ch->full[i] || ch->slot_step[i] != need) return false;
+            if (ch->faults) {
+                const auto d = ch->faults->apply(need, ch->slot[i]);
+                ch->port->set_lost(d.lost);
+                ch->port->bind(d.data);
+                continue;
+            }
             ch->port->bind(ch->slot[i]);
         }
         return true;
+    }
+
+    void send_done(const Local& l, std::uint64_t k) {
+        done.run_id(ri.run_index);
+        done.step(k);
+        done.member_index(l.index);
+        done_writer->write(&done);
+    }
+
+    // A scheduled kill or restart of member `l` at step k. Returns false when `l` is not stepped at k.
+    bool apply_member_faults(Local& l, std::uint64_t k) {
+        const std::string name = l.comp->name();
+        if (schedule.restarts_at(name, k) && l.restarted_at != k) {
+            l.restarted_at = k;
+            std::unique_ptr<Component> fresh = opt.rebuild(name);
+            for (std::size_t n = 0; n < l.inputs.size(); ++n) {
+                l.inputs[n]->port = fresh->inputs()[n];
+                if (l.inputs[n]->lost) l.inputs[n]->port->mark_lost();
+            }
+            for (std::size_t n = 0; n < l.outputs.size(); ++n) l.outputs[n].first = fresh->outputs()[n];
+            for (auto& c : owned)
+                if (c.get() == l.comp) c = std::move(fresh), l.comp = c.get();
+            l.killed = false;
+            spdlog::warn("[{}] step {} t={:.2f} s: restarted by a scheduled fault (created anew)", name, k,
+                         ri.time_of(k));
+            send_status(l, msg::STATUS_MODE, "restarted by a scheduled fault");
+        }
+        if (!schedule.killed(name, k)) return true;
+        if (!l.killed) {
+            l.killed = true;
+            spdlog::warn("[{}] step {} t={:.2f} s: killed by a scheduled fault", name, k, ri.time_of(k));
+            send_status(l, msg::STATUS_MODE, "killed by a scheduled fault");
+            // The clock stops waiting for it from step k on: report the steps done before (done_every cadence).
+            if (k > 0 && !opt.free_running && k % done_every != 0) send_done(l, k - 1);
+        }
+        l.next_step = std::min(schedule.alive_again(name, k), ri.steps);
+        return false;
     }
 
     // Free inputs of a step about to run: how many steps old the sample used is (once per executed step).
@@ -416,8 +584,13 @@ struct DdsHost::Impl {
         bool any = false;
         for (auto& l : locals) {
             if (l.index == UINT32_MAX) continue;
-            while (have_tick && l.next_step <= tick_step + window_steps && l.next_step < ri.steps) {
+            while (!l.awaiting_rejoin && have_tick && l.next_step <= tick_step + window_steps &&
+                   l.next_step < ri.steps) {
                 const std::uint64_t k = l.next_step;
+                if (!schedule.empty() && !apply_member_faults(l, k)) {
+                    any = true;
+                    continue;
+                }
                 for (Channel* ch : l.inputs) read_data(l, *ch);
                 if (!inputs_ready(l, k)) break;
                 record_lateness(l, k);
@@ -433,12 +606,7 @@ struct DdsHost::Impl {
                 }
                 l.comp->pending_status().clear();
                 ++l.next_step;
-                if (!opt.free_running && ((k + 1) % done_every == 0 || k + 1 == ri.steps)) {
-                    done.run_id(ri.run_index);
-                    done.step(k);
-                    done.member_index(l.index);
-                    done_writer->write(&done);
-                }
+                if (!opt.free_running && ((k + 1) % done_every == 0 || k + 1 == ri.steps)) send_done(l, k);
                 any = true;
             }
         }
@@ -514,7 +682,7 @@ struct DdsHost::Impl {
         lock.lock();
         for (auto& l : locals) {
             if (code != kExitOk) send_status(l, msg::STATUS_EXIT, "exit code " + std::to_string(code));
-            l.comp->finish(code == kExitOk);
+            if (!l.killed) l.comp->finish(code == kExitOk);
         }
         report_lateness();
         return code;

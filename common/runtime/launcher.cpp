@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <fstream>
@@ -95,11 +96,23 @@ bool wait_all(std::vector<Child>& cs, double seconds, const std::function<void(C
 int run_direct(const RunConfig& rc, const ComponentRegistry& reg, bool progress, double* steps_per_s) {
     auto comps = rc.build(reg);
     DirectExecutor ex(std::move(comps), rc.info);
+    ex.set_faults(rc.faults, [&rc, &reg](const std::string& name) { return rc.build_one(reg, name); });
+    // An essential member killed by a scheduled fault ends the run at that step, as the clock does.
+    std::uint64_t abort_at = rc.info.steps;
+    std::string abort_reason;
+    for (const auto& f : rc.faults.faults())
+        if (f.kind == faults::Kind::Kill && f.from_step < abort_at &&
+            std::find(rc.essential.begin(), rc.essential.end(), f.target) != rc.essential.end()) {
+            abort_at = f.from_step;
+            abort_reason = "essential member '" + f.target + "' killed by a scheduled fault at step " +
+                           std::to_string(f.from_step);
+        }
     install_stop_signal_handlers();
     const double t0 = steady_now_s();
     double next_log = t0 + 2.0;
     const std::uint64_t done = ex.run(
         [&](std::uint64_t k) {
+            if (abort_at < rc.info.steps && k >= abort_at) return false;
             if (stop_requested()) return false;
             if (!progress) return true;
             const double now = steady_now_s();
@@ -111,7 +124,16 @@ int run_direct(const RunConfig& rc, const ComponentRegistry& reg, bool progress,
                          sps * rc.info.dt_s);
             return true;
         },
-        100);
+        abort_at < rc.info.steps ? 1 : 100);
+    if (done == abort_at && abort_at < rc.info.steps) {
+        spdlog::error("run aborted: {}", abort_reason);
+        if (!rc.out_dir.empty()) {
+            std::ofstream f(fs::path(rc.out_dir) / "clock_summary.yaml");
+            f << "completed: false\nsteps_done: " << done << "\nabort_reason: \"" << abort_reason
+              << "\"\ndead_members: []\nreproducible: true\n";
+        }
+        return kExitAborted;
+    }
     if (done < rc.info.steps) {
         spdlog::error("run interrupted by signal {} at step {}", stop_signal(), done);
         return kExitInterrupted;

@@ -7,6 +7,7 @@ GDNAV_DECLARE_MESSAGE(gdnav::msg::Tick, gdnav::msg::TickPubSubType)
 GDNAV_DECLARE_MESSAGE(gdnav::msg::StepDone, gdnav::msg::StepDonePubSubType)
 GDNAV_DECLARE_MESSAGE(gdnav::msg::RunControl, gdnav::msg::RunControlPubSubType)
 GDNAV_DECLARE_MESSAGE(gdnav::msg::ComponentStatus, gdnav::msg::ComponentStatusPubSubType)
+GDNAV_DECLARE_MESSAGE(gdnav::msg::FaultRequest, gdnav::msg::FaultRequestPubSubType)
 GDNAV_DECLARE_MESSAGE(gdnav::msg::Truth, gdnav::msg::TruthPubSubType)
 GDNAV_DECLARE_MESSAGE(gdnav::msg::ImuSample, gdnav::msg::ImuSamplePubSubType)
 GDNAV_DECLARE_MESSAGE(gdnav::msg::MagSample, gdnav::msg::MagSamplePubSubType)
@@ -25,6 +26,7 @@ inline constexpr const char* kTick = "gdnav/Tick";
 inline constexpr const char* kStepDone = "gdnav/StepDone";
 inline constexpr const char* kRunControl = "gdnav/RunControl";
 inline constexpr const char* kStatus = "gdnav/ComponentStatus";
+inline constexpr const char* kFaultRequest = "gdnav/FaultRequest";
 // Data plane.
 inline constexpr const char* kTruth = "gdnav/Truth";
 inline constexpr const char* kImu = "gdnav/ImuSample";

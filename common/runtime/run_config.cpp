@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -72,6 +73,12 @@ RunConfig RunConfig::parse(const std::string& text, const std::string& origin, c
         for (const auto& n : *o.external) root["run"]["external"].push_back(n);
     }
     if (o.join_timeout_s) root["run"]["join_timeout_s"] = *o.join_timeout_s;
+    if (o.faults_file) {
+        // A run's <out>/faults.yaml (or any file with a `faults:` list): the schedule to apply instead.
+        const Config f = Config::load(*o.faults_file);
+        if (!f.has("faults")) f.fail("faults", "missing (required: the list of faults)");
+        root["faults"] = YAML::Clone(f.node()["faults"]);
+    }
     if (o.steps) {
         root["run"].remove("duration_s");
         root["run"]["steps"] = *o.steps;
@@ -148,9 +155,14 @@ RunConfig RunConfig::parse(const std::string& text, const std::string& origin, c
     if (names.size() > 63) run.fail("external", "at most 63 members per run (components and external members)");
     for (const auto& e : rc.essential)
         if (!names.count(e)) run.fail("essential", "'" + e + "' is not a member of this run");
-    // Only 'run' and 'components' at top level; each component section is checked by build().
+    // The fault schedule: parsed here, checked against the members' ports by build().
+    rc.faults = faults::FaultSchedule::parse(top, rc.info);
+    if (rc.faults.to_yaml().size() > 8192)
+        top.fail("faults", "the schedule takes more than 8192 characters of YAML (RunControl.faults); use fewer faults");
+    // Only 'run', 'components' and 'faults' at top level; each component section is checked by build().
     for (const auto& k : top.keys())
-        if (k != "run" && k != "components") top.fail(k, "unknown key (allowed: run, components)");
+        if (k != "run" && k != "components" && k != "faults")
+            top.fail(k, "unknown key (allowed: run, components, faults)");
     return rc;
 }
 
@@ -159,6 +171,27 @@ std::vector<std::unique_ptr<Component>> RunConfig::build(const ComponentRegistry
     std::vector<std::unique_ptr<Component>> out;
     for (const auto& m : members) {
         if (!only.empty() && std::find(only.begin(), only.end(), m.name) == only.end()) continue;
+        out.push_back(build_one(reg, m.name));
+    }
+    for (const auto& n : only) {
+        bool found = false;
+        for (const auto& m : members) found = found || m.name == n;
+        if (!found) throw ConfigError("config error: " + origin + ": no component named '" + n + "'");
+    }
+    if (only.empty() && !faults.empty()) {
+        std::map<std::string, faults::MemberPorts> ports;
+        for (const auto& c : out)
+            for (const OutputBase* o : c->outputs()) ports[c->name()].outputs.push_back(o->topic());
+        for (const auto& c : out) (void)ports[c->name()];
+        for (const auto& e : external) ports[e].external = true;
+        faults.validate(ports, origin);
+    }
+    return out;
+}
+
+std::unique_ptr<Component> RunConfig::build_one(const ComponentRegistry& reg, const std::string& name) const {
+    for (const auto& m : members) {
+        if (m.name != name) continue;
         if (!reg.has(m.type)) {
             std::string known;
             for (const auto& t : reg.types()) known += (known.empty() ? "" : ", ") + t;
@@ -168,14 +201,9 @@ std::vector<std::unique_ptr<Component>> RunConfig::build(const ComponentRegistry
         rnd::Stream stream = rnd::Stream::derive(info.seed, info.run_index, m.name);
         c->configure(m.cfg, info, stream);
         m.cfg.finish();
-        out.push_back(std::move(c));
+        return c;
     }
-    for (const auto& n : only) {
-        bool found = false;
-        for (const auto& m : members) found = found || m.name == n;
-        if (!found) throw ConfigError("config error: " + origin + ": no component named '" + n + "'");
-    }
-    return out;
+    throw ConfigError("config error: " + origin + ": no component named '" + name + "'");
 }
 
 bool RunConfig::is_external(const std::string& name) const {

@@ -22,6 +22,8 @@
 //     out_dir: out/run
 //   components:
 //     plant: {type: chain_plant, ...component parameters...}
+//   faults:                    # optional: scheduled faults (runtime/faults/fault_schedule.hpp, docs/faults.md)
+//     - {at_s: 10, until_s: 20, target: plant, kind: drop}
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -31,6 +33,7 @@
 
 #include "config/config.hpp"
 #include "runtime/component.hpp"
+#include "runtime/faults/fault_schedule.hpp"
 #include "runtime/registry.hpp"
 
 namespace gdnav::runtime {
@@ -49,6 +52,7 @@ struct RunOverrides {
     std::optional<std::uint64_t> steps;
     std::optional<std::vector<std::string>> external;
     std::optional<double> join_timeout_s;
+    std::optional<std::filesystem::path> faults_file;  // replaces the `faults:` list (gdnav run --faults)
 };
 
 struct MemberSpec {
@@ -65,6 +69,8 @@ public:
     // Creates and configures every component (validating its section). Throws ConfigError on the first problem.
     [[nodiscard]] std::vector<std::unique_ptr<Component>> build(const ComponentRegistry& reg,
                                                                 const std::vector<std::string>& only = {}) const;
+    // Creates and configures one component (as build() does): a member restarted by a fault starts like this.
+    [[nodiscard]] std::unique_ptr<Component> build_one(const ComponentRegistry& reg, const std::string& name) const;
     // The resolved document (overrides applied) as YAML text.
     [[nodiscard]] std::string to_yaml() const;
 
@@ -89,6 +95,7 @@ public:
     std::filesystem::path dds_profile;
     std::string out_dir;
     std::vector<MemberSpec> members;  // in file order
+    faults::FaultSchedule faults;     // top-level `faults:` list (docs/faults.md)
     std::string origin;
 
 private:

@@ -91,6 +91,7 @@ public:
         target_ = c.get_double("target_m", Range{-1e6, 1e6});
     }
     void step(const runtime::StepContext&) override {
+        if (!in_.available()) return;  // no estimate (lost or dropped): hold the last command
         const auto& e = in_.get();
         out_.value().u_mps2(-kp_ * (e.x_m() - target_) - kd_ * e.v_mps());
     }

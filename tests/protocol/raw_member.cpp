@@ -3,7 +3,7 @@
 // replaces the test chain's `chain_controller` (tests/chain): input chain/estimate (Lag Same), output chain/control,
 // u = -kp (x_hat - target) - kd v_hat. Section numbers (§) refer to docs/protocol.md.
 //   gdnav-raw-member --domain D [--run I] [--name chain_controller] [--kp 1] [--kd 1.5] [--target 0]
-//                    [--startup-timeout 120] [--protocol-version 1]   (the last one only to test the refusal, §3.1)
+//                    [--startup-timeout 120] [--protocol-version V]   (the last one only to test the refusal, §3.1)
 #include <unistd.h>
 
 #include <algorithm>
@@ -121,7 +121,8 @@ bool contains(const std::string& csv, const std::string& topic) {  // §3.1: com
 int main(int argc, char** argv) {
     std::map<std::string, std::string> a{{"--domain", ""}, {"--run", "0"}, {"--name", "chain_controller"},
                                          {"--kp", "1.0"}, {"--kd", "1.5"}, {"--target", "0.0"},
-                                         {"--startup-timeout", "120"}, {"--protocol-version", "1"}};
+                                         {"--startup-timeout", "120"},
+                                         {"--protocol-version", std::to_string(gdnav::msg::LOCKSTEP_PROTOCOL_VERSION)}};
     for (int i = 1; i + 1 < argc; i += 2) {
         if (!a.count(argv[i])) return std::fprintf(stderr, "unknown option %s\n", argv[i]), 2;
         a[argv[i]] = argv[i + 1];

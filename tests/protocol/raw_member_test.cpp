@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "process_util.hpp"
+#include "gdnav.h"
 
 using namespace gdnav::testing;
 namespace fs = std::filesystem;
@@ -62,13 +63,15 @@ TEST(RawMember, WrongProtocolVersionIsRefusedAndTheRunEndsAtTheJoinTimeout) {
     const auto out = temp_dir("raw-version");
     const Pair p = run_with_raw_member(
         {"run", "--scenario", chain_scenario(), "--layout", "distributed", "--join-timeout", "3"},
-        {"--protocol-version", "2"}, out, 60.0);
+        {"--protocol-version", "99"}, out, 60.0);
     EXPECT_EQ(p.run_code, 5) << p.run_log;
     // §3.1: one error naming the member, its host and both versions.
     const std::string refused = "member 'chain_controller' (";
     const auto at = p.run_log.find(refused);
     ASSERT_NE(at, std::string::npos) << p.run_log;
-    EXPECT_NE(p.run_log.find("speaks lockstep protocol version 2, this clock speaks 1: refused", at), std::string::npos)
+    const std::string versions = "speaks lockstep protocol version 99, this clock speaks " +
+                                 std::to_string(gdnav::msg::LOCKSTEP_PROTOCOL_VERSION) + ": refused";
+    EXPECT_NE(p.run_log.find(versions, at), std::string::npos)
         << p.run_log;
     EXPECT_EQ(p.run_log.find(refused, at + 1), std::string::npos) << "logged more than once:\n" << p.run_log;
     EXPECT_NE(p.run_log.find("external member 'chain_controller' did not join within 3 s"), std::string::npos) << p.run_log;

@@ -131,14 +131,15 @@ py::list Port::fields() const {
 void Port::set(const std::string& name, const py::handle& value) {
     if (!out_) throw std::runtime_error("input " + topic_ + " is read-only; assign fields of outputs");
     const Field& f = field(name);
-    const std::string what = "field '" + name + "' of " + topic_ + " (" + type_text(f) + ")";
-    if (name.rfind("stamp.", 0) == 0) throw std::invalid_argument(what + " is set by the host when it publishes");
+    // Built only for an error message: set() runs for every field a Python member writes, every step.
+    const auto what = [&] { return "field '" + name + "' of " + topic_ + " (" + type_text(f) + ")"; };
+    if (name.rfind("stamp.", 0) == 0) throw std::invalid_argument(what() + " is set by the host when it publishes");
     void* m = out_->data();
     if (f.kind == Kind::String) {
-        if (!py::isinstance<py::str>(value)) throw py::type_error(what + ": expected a str");
+        if (!py::isinstance<py::str>(value)) throw py::type_error(what() + ": expected a str");
         const auto s = value.cast<std::string>();
         if (s.size() > f.count)
-            throw std::invalid_argument(what + ": " + std::to_string(s.size()) + " characters, at most " +
+            throw std::invalid_argument(what() + ": " + std::to_string(s.size()) + " characters, at most " +
                                         std::to_string(f.count));
         f.set_str(m, s);
         return;
@@ -148,18 +149,18 @@ void Port::set(const std::string& name, const py::handle& value) {
         auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(value);
         if (!a) {
             PyErr_Clear();
-            throw py::type_error(what + ": expected an array of " + std::to_string(f.count) + " numbers");
+            throw py::type_error(what() + ": expected an array of " + std::to_string(f.count) + " numbers");
         }
         if (a.ndim() != 1 || static_cast<std::size_t>(a.size()) != f.count) {
             std::string shape;
             for (py::ssize_t i = 0; i < a.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(a.shape(i));
-            throw std::invalid_argument(what + ": expected " + std::to_string(f.count) + " values, got shape (" +
+            throw std::invalid_argument(what() + ": expected " + std::to_string(f.count) + " values, got shape (" +
                                         shape + (a.ndim() == 1 ? ",)" : ")"));
         }
         std::memcpy(p, a.data(), f.count * sizeof(double));
         return;
     }
-    if (f.count > 1) throw std::invalid_argument(what + ": assigning arrays of this kind is not supported");
+    if (f.count > 1) throw std::invalid_argument(what() + ": assigning arrays of this kind is not supported");
     try {
         switch (f.kind) {
             case Kind::F64: {
@@ -184,7 +185,7 @@ void Port::set(const std::string& name, const py::handle& value) {
                                               : f.kind == Kind::Enum ? enum_count(f) - 1
                                                                      : std::numeric_limits<unsigned long long>::max();
                 if (v < 0 || static_cast<unsigned long long>(v) > hi)
-                    throw std::invalid_argument(what + ": " + std::to_string(v) + " out of range [0, " +
+                    throw std::invalid_argument(what() + ": " + std::to_string(v) + " out of range [0, " +
                                                 std::to_string(hi) + "]");
                 const auto u = static_cast<std::uint64_t>(v);
                 if (f.kind == Kind::U8) *static_cast<std::uint8_t*>(p) = static_cast<std::uint8_t>(u);
@@ -198,7 +199,7 @@ void Port::set(const std::string& name, const py::handle& value) {
             case Kind::String: break;
         }
     } catch (const py::cast_error&) {
-        throw py::type_error(what + ": cannot assign a value of type " +
+        throw py::type_error(what() + ": cannot assign a value of type " +
                              py::str(py::type::handle_of(value).attr("__name__")).cast<std::string>());
     }
 }

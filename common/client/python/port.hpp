@@ -6,10 +6,15 @@
 
 #include <pybind11/pybind11.h>
 
-#include "fields.hpp"
+#include "runtime/fields/field_table.hpp"
 #include "runtime/component.hpp"
 
 namespace gdnav::pyclient {
+
+using runtime::fields::Field;
+using runtime::fields::Kind;
+using runtime::fields::TypeFields;
+using runtime::fields::find_type_fields;
 
 // Shared by a member and its ports: inputs are readable only while the step callback runs (the host rebinds and
 // frees their samples between steps).

@@ -1,12 +1,12 @@
 #pragma once
-// Field tables of the IDL message types, for the Python bindings: generated at build time from idl/gdnav.idl by
-// gen_fields.py (one table per struct; nested structs are flattened to dotted names such as "stamp.t_s").
+// Field tables of the IDL message types (Python bindings, fault injection): generated at build time from
+// idl/gdnav.idl by gen_fields.py (one table per struct; nested structs are flattened to dotted names such as "stamp.t_s").
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
 
-namespace gdnav::pyclient {
+namespace gdnav::runtime::fields {
 
 enum class Kind : std::uint8_t { F64, Bool, U8, U32, U64, Enum, String };
 
@@ -29,4 +29,4 @@ struct TypeFields {
 // The table of a type; nullptr when the generator skipped it (a member the bindings do not support).
 const TypeFields* find_type_fields(std::string_view type_name);
 
-}  // namespace gdnav::pyclient
+}  // namespace gdnav::runtime::fields

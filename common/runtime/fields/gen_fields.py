@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Generates the field tables of the Python bindings (fields.hpp) from an IDL file.
+"""Generates the field tables of the IDL message types (runtime/fields/field_table.hpp) from an IDL file.
 
     gen_fields.py IDL OUT.cpp
 
@@ -180,8 +180,8 @@ def emit(parser, idl_name):
            "// Structs without a table (a member the bindings do not support):"]
     out += [f"//   {s}" for s in skipped] or ["//   none"]
     out += ["#include <array>", "#include <string>", "#include <string_view>", "#include <type_traits>", "",
-            '#include "fields.hpp"', f'#include "{idl_name.rsplit(".", 1)[0]}.h"', "",
-            "namespace gdnav::pyclient {", "namespace {", ""]
+            '#include "runtime/fields/field_table.hpp"', f'#include "{idl_name.rsplit(".", 1)[0]}.h"', "",
+            "namespace gdnav::runtime::fields {", "namespace {", ""]
     for q, fields in tables:
         T = cxx(q)
         ident = q.replace("::", "_")
@@ -211,7 +211,7 @@ def emit(parser, idl_name):
     for q, fields in tables:
         out.append(f'        {{"{q}", k_{q.replace("::", "_")}, std::size(k_{q.replace("::", "_")})}},')
     out += ["    };", "    for (const TypeFields& t : all)", "        if (type_name == t.type_name) return &t;",
-            "    return nullptr;", "}", "", "}  // namespace gdnav::pyclient", ""]
+            "    return nullptr;", "}", "", "}  // namespace gdnav::runtime::fields", ""]
     return "\n".join(out)
 
 
