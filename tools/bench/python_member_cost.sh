@@ -20,7 +20,7 @@ one() {  # one run with nav_att external: $1 = cpp|py, $2 = domain; prints "wall
     else PYTHONPATH=$B/python /usr/bin/python3 "$SRC/examples/python/complementary_attitude.py" --domain "$2" \
         > "$T/$1.member.log" 2>&1; fi
     wait $L
-    local cb; cb=$(grep -o 'wall mean [0-9.]*' "$T/$1.member.log" | tail -1 | awk '{print $3}')
+    local cb; cb=$( (grep -o 'wall mean [0-9.]*' "$T/$1.member.log" || true) | tail -1 | awk '{print $3}')
     # wall time from step 0 to the end (the clock's), not the start-up
     echo "$(awk '/^wall_s:/ {print $2}' "$T/$1/clock_summary.yaml") ${cb:-0}"
 }
