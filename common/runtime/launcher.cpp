@@ -163,7 +163,9 @@ int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& 
         rc.domain_id = static_cast<int>(getpid() % 200) + 20;
         RunOverrides o;
         o.domain_id = rc.domain_id;
+        const std::string faults_origin = rc.faults_origin;  // errors keep naming the file the faults came from
         rc = RunConfig::parse(rc.to_yaml(), rc.origin, o);
+        rc.faults_origin = faults_origin;
     }
     // Validate everything before anything starts: build (construct + configure) every component.
     (void)rc.build(reg);

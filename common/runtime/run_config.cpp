@@ -156,7 +156,15 @@ RunConfig RunConfig::parse(const std::string& text, const std::string& origin, c
     for (const auto& e : rc.essential)
         if (!names.count(e)) run.fail("essential", "'" + e + "' is not a member of this run");
     // The fault schedule: parsed here, checked against the members' ports by build().
-    rc.faults = faults::FaultSchedule::parse(top, rc.info);
+    if (o.faults_file) {  // errors name the faults file
+        const Config f = Config::load(*o.faults_file);
+        rc.faults = faults::FaultSchedule::parse(f, rc.info);
+        f.finish();
+        rc.faults_origin = o.faults_file->string();
+    } else {
+        rc.faults = faults::FaultSchedule::parse(top, rc.info);
+        rc.faults_origin = origin;
+    }
     if (rc.faults.to_yaml().size() > 8192)
         top.fail("faults", "the schedule takes more than 8192 characters of YAML (RunControl.faults); use fewer faults");
     // Only 'run', 'components' and 'faults' at top level; each component section is checked by build().
@@ -184,7 +192,7 @@ std::vector<std::unique_ptr<Component>> RunConfig::build(const ComponentRegistry
             for (const OutputBase* o : c->outputs()) ports[c->name()].outputs.push_back(o->topic());
         for (const auto& c : out) (void)ports[c->name()];
         for (const auto& e : external) ports[e].external = true;
-        faults.validate(ports, origin);
+        faults.validate(ports, faults_origin);
     }
     return out;
 }

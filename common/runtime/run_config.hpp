@@ -96,6 +96,7 @@ public:
     std::string out_dir;
     std::vector<MemberSpec> members;  // in file order
     faults::FaultSchedule faults;     // top-level `faults:` list (docs/faults.md)
+    std::string faults_origin;        // the file it came from (the run config, or gdnav run --faults FILE)
     std::string origin;
 
 private:

@@ -1,11 +1,16 @@
 // Scheduled faults (runtime/faults): parsing and validation errors, and what each kind delivers to a consumer.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "runtime/faults/fault_schedule.hpp"
 #include "runtime/faults/input_faults.hpp"
 #include "runtime/messages.hpp"
+#include "runtime/run_config.hpp"
 #include "runtime/topic_types.hpp"
 
 using namespace gdnav;
@@ -221,4 +226,33 @@ TEST(InputFaults, LossAndNoiseAreTheSameForEveryConsumerAndFollowTheirLaw) {
         differ += lost_here != lost_there;
     }
     EXPECT_GT(differ, 200) << "run index 4 must not repeat run 3's losses (expected ~420 of 1000 steps differ)";
+}
+
+TEST(FaultSchedule, AFaultsFileReplacesTheListAndNamesItselfInErrors) {
+    const std::string run_yaml =
+        "run: {seed: 1, steps: 100}\n"
+        "components: {a: {type: chain_plant}}\n"
+        "faults: [{at_s: 0.5, target: a, kind: drop}]\n";
+    const auto file = std::filesystem::temp_directory_path() / ("gdnav_faults_" + std::to_string(::getpid()) + ".yaml");
+    {
+        std::ofstream f(file);
+        f << "faults: [{at_s: 0.2, until_s: 0.3, target: a, kind: freeze}]\n";
+    }
+    runtime::RunOverrides o;
+    o.faults_file = file;
+    const auto rc = runtime::RunConfig::parse(run_yaml, "r.yaml", o);
+    ASSERT_EQ(rc.faults.faults().size(), 1u);
+    EXPECT_EQ(rc.faults.faults()[0].kind, Kind::Freeze);
+    EXPECT_EQ(rc.faults.faults()[0].from_step, 20u);
+    {
+        std::ofstream f(file);
+        f << "faults: [{at_s: 0.2, target: a, kind: melt}]\n";
+    }
+    try {
+        (void)runtime::RunConfig::parse(run_yaml, "r.yaml", o);
+        ADD_FAILURE() << "a bad kind in the faults file was accepted";
+    } catch (const config::ConfigError& e) {
+        EXPECT_NE(std::string(e.what()).find(file.string() + ": key 'faults[0].kind'"), std::string::npos) << e.what();
+    }
+    std::filesystem::remove(file);
 }
