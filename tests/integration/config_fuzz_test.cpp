@@ -190,18 +190,24 @@ void write_derived_scenario(const fs::path& cfg, const std::string& name,
     write_text(cfg / "scenarios" / (name + ".yaml"), emit(doc));
 }
 
+// A private copy of config/ in a temporary directory, read by the validator through GDNAV_CONFIG_DIR, with every
+// component type registered in `reg`. Returns the temporary directory (config/ is below it).
+fs::path private_config(const std::string& tag, gdnav::runtime::ComponentRegistry& reg) {
+    const fs::path tmp = gdnav::testing::temp_dir(tag);
+    fs::copy(fs::path(GDNAV_SOURCE_DIR) / "config", tmp / "config", fs::copy_options::recursive);
+    ::setenv("GDNAV_CONFIG_DIR", (tmp / "config").c_str(), 1);
+    gdnav::runtime::register_gdnav_topics();
+    gdnav::app::register_all_components(reg);
+    return tmp;
+}
+
 }  // namespace
 
 TEST(ConfigFuzz, PaperScenarioFilesRejectEveryInvalidMutation) {
-    const fs::path src = fs::path(GDNAV_SOURCE_DIR) / "config";
-    const fs::path tmp = gdnav::testing::temp_dir("cfg_fuzz");
-    const fs::path cfg = tmp / "config";
-    fs::copy(src, cfg, fs::copy_options::recursive);
-    ::setenv("GDNAV_CONFIG_DIR", cfg.c_str(), 1);
-
-    gdnav::runtime::register_gdnav_topics();
     gdnav::runtime::ComponentRegistry reg;
-    gdnav::app::register_all_components(reg);
+    const fs::path tmp = private_config("cfg_fuzz", reg);
+    const fs::path src = fs::path(GDNAV_SOURCE_DIR) / "config";
+    const fs::path cfg = tmp / "config";
 
     // Everything logged during a validation (gdnav validate prints it: a rejection must be the only line).
     std::ostringstream log;
@@ -421,14 +427,9 @@ TEST(ConfigFuzz, PaperScenarioFilesRejectEveryInvalidMutation) {
 // The finding of the user trial (issue 11 item 5): unknown keys in config/nav/tuning.yaml and the variant files were
 // accepted when they lay outside the section a nav component reads. Each file is now validated whole.
 TEST(ConfigFuzz, NavTuningAndVariantFilesRejectUnknownKeysAnywhere) {
-    const fs::path src = fs::path(GDNAV_SOURCE_DIR) / "config";
-    const fs::path tmp = gdnav::testing::temp_dir("cfg_nav");
-    const fs::path cfg = tmp / "config";
-    fs::copy(src, cfg, fs::copy_options::recursive);
-    ::setenv("GDNAV_CONFIG_DIR", cfg.c_str(), 1);
-    gdnav::runtime::register_gdnav_topics();
     gdnav::runtime::ComponentRegistry reg;
-    gdnav::app::register_all_components(reg);
+    const fs::path tmp = private_config("cfg_nav", reg);
+    const fs::path cfg = tmp / "config";
 
     struct NavCase {
         std::string file, append, key;
