@@ -534,24 +534,28 @@ struct DdsHost::Impl {
         done_writer->write(&done);
     }
 
-    // A scheduled kill or restart of member `l` at step k. Returns false when `l` is not stepped at k.
-    bool apply_member_faults(Local& l, std::uint64_t k) {
-        const std::string name = l.comp->name();
-        if (schedule.restarts_at(name, k) && l.restarted_at != k) {
-            l.restarted_at = k;
-            std::unique_ptr<Component> fresh = opt.rebuild(name);
-            for (std::size_t n = 0; n < l.inputs.size(); ++n) {
-                l.inputs[n]->port = fresh->inputs()[n];
-                if (l.inputs[n]->lost) l.inputs[n]->port->mark_lost();
-            }
-            for (std::size_t n = 0; n < l.outputs.size(); ++n) l.outputs[n].first = fresh->outputs()[n];
-            for (auto& c : owned)
-                if (c.get() == l.comp) c = std::move(fresh), l.comp = c.get();
-            l.killed = false;
-            spdlog::warn("[{}] step {} t={:.2f} s: restarted by a scheduled fault (created anew)", name, k,
-                         ri.time_of(k));
-            send_status(l, msg::STATUS_MODE, "restarted by a scheduled fault");
+    // A restart: member `l` is created anew at step k (the old object goes, with its state).
+    void restart(Local& l, std::uint64_t k) {
+        const std::string name = l.comp->name();  // a copy: the old member is destroyed below
+        l.restarted_at = k;
+        std::unique_ptr<Component> fresh = opt.rebuild(name);
+        for (std::size_t n = 0; n < l.inputs.size(); ++n) {
+            l.inputs[n]->port = fresh->inputs()[n];
+            if (l.inputs[n]->lost) l.inputs[n]->port->mark_lost();
         }
+        for (std::size_t n = 0; n < l.outputs.size(); ++n) l.outputs[n].first = fresh->outputs()[n];
+        for (auto& c : owned)
+            if (c.get() == l.comp) c = std::move(fresh), l.comp = c.get();
+        l.killed = false;
+        spdlog::warn("[{}] step {} t={:.2f} s: restarted by a scheduled fault (created anew)", name, k, ri.time_of(k));
+        send_status(l, msg::STATUS_MODE, "restarted by a scheduled fault");
+    }
+
+    // A scheduled kill or restart of member `l` at step k (called every step when the run has faults). Returns
+    // false when `l` is not stepped at k.
+    bool apply_member_faults(Local& l, std::uint64_t k) {
+        if (l.restarted_at != k && schedule.restarts_at(l.comp->name(), k)) restart(l, k);
+        const std::string& name = l.comp->name();
         if (!schedule.killed(name, k)) return true;
         if (!l.killed) {
             l.killed = true;

@@ -88,7 +88,8 @@ void InputFaults::set_nan(const Active& a, void* msg) {
 InputFaults::Delivery InputFaults::apply(std::uint64_t j, const void* sample) {
     if (j == memo_step_) return memo_;
     memo_step_ = j;
-    if (producer_killed(j) || !sample) return memo_ = {nullptr, producer_killed(j)};
+    const bool killed = producer_killed(j);
+    if (killed || !sample) return memo_ = {nullptr, killed};
     if (!history_.empty()) {
         const std::size_t i = j % history_.size();
         ops_.copy(history_[i], sample);
