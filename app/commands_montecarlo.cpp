@@ -5,6 +5,8 @@
 //   DIR/batch.yaml        how the batch was started
 //   DIR/runs/run_NNNN/    each run's output (run.h5, metrics.yaml, run.yaml, log.txt)
 //   DIR/report/           tables.md, aggregate.yaml, runs.csv, figures
+// With --shard I/N only the I-th interleaved slice runs (batch_dir.hpp) and there is no report; --mpi spreads the
+// slices over MPI ranks (montecarlo_mpi.cpp).
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/prctl.h>
@@ -25,6 +27,7 @@
 #include "commands.hpp"
 #include "commands_report.hpp"
 #include "commands_scenario.hpp"
+#include "montecarlo.hpp"
 #include "metrics/run_record.hpp"
 #include "runtime/lockstep.hpp"
 #include "runtime/process_signals.hpp"
@@ -36,20 +39,6 @@ namespace fs = std::filesystem;
 using namespace gdnav::runtime;
 
 namespace {
-
-struct McArgs {
-    std::string scenario{"1"};
-    std::uint64_t runs{1};
-    std::uint64_t first{0};
-    std::uint64_t seed{1};
-    unsigned jobs{2};
-    std::string layout{"direct"};
-    std::string out;
-    std::uint64_t steps{0};
-    scenario::Overrides o;
-    bool no_report{false};
-    bool no_figures{false};
-};
 
 struct Worker {
     std::uint64_t run{0};
@@ -64,12 +53,6 @@ struct Failure {
     int code;
     std::string last_line;
 };
-
-std::string run_dir_name(std::uint64_t i) {
-    char b[32];
-    std::snprintf(b, sizeof(b), "run_%04llu", static_cast<unsigned long long>(i));
-    return b;
-}
 
 std::string read_tail(const fs::path& p, std::size_t bytes = 4096) {
     std::ifstream f(p, std::ios::binary);
@@ -142,24 +125,20 @@ void prepare_batch_dir(const fs::path& dir, const std::string& text) {
     const fs::path file = dir / "scenario.yaml";
     const std::string content = "# Scenario of this batch (overrides applied); written by gdnav montecarlo\n" + text;
     if (fs::exists(file)) {
-        std::ifstream f(file);
-        std::stringstream ss;
-        ss << f.rdbuf();
-        if (ss.str() != content)
+        if (read_text(file) != content)
             throw config::ConfigError("montecarlo: " + dir.string() +
                                       " holds a batch of a different scenario or settings (scenario.yaml differs); "
                                       "use another --out or remove the folder");
         return;
     }
-    std::ofstream f(file);
-    f << content;
+    write_file_atomic(file, content);  // shards sharing DIR may write it at the same time (the same text)
 }
 
 }  // namespace
 
-int run_montecarlo(const McArgs& a, const CliContext& ctx, bool seed_given) {
+int run_batch_shard(const McArgs& a, const CliContext& ctx, const Shard& shard) {
     ScenarioDocument s = load_scenario_document(a.scenario, a.o);
-    if (seed_given || !s.doc["run"]["seed"]) s.doc["run"]["seed"] = a.seed;
+    if (a.seed_given || !s.doc["run"]["seed"]) s.doc["run"]["seed"] = a.seed;
     if (a.steps > 0) {
         s.doc["run"].remove("duration_s");
         s.doc["run"]["steps"] = a.steps;
@@ -181,15 +160,23 @@ int run_montecarlo(const McArgs& a, const CliContext& ctx, bool seed_given) {
     const std::string generator =
         s.doc["generator"] && s.doc["generator"]["name"] ? s.doc["generator"]["name"].Scalar() : "";
     {
-        std::ofstream b(dir / "batch.yaml");
+        // The same text from every shard of a batch (they may share DIR); a whole batch records its jobs.
+        std::ostringstream b;
         b << "# gdnav montecarlo batch (the latest invocation)\nscenario: " << a.scenario << "\nfile: " << s.file.string()
           << "\ngenerator: " << (generator.empty() ? "none" : generator) << "\nseed: " << seed << "\nfirst: " << a.first
-          << "\nruns: " << a.runs << "\nlayout: " << a.layout << "\njobs: " << a.jobs << "\n";
+          << "\nruns: " << a.runs << "\nlayout: " << a.layout << "\n";
+        if (shard.whole())
+            b << "jobs: " << a.jobs << "\n";
+        else
+            b << "shards: " << shard.count << "\n";
+        write_file_atomic(dir / "batch.yaml", b.str());
     }
+    const std::vector<std::uint64_t> mine = shard_runs(a.first, a.runs, shard);
+    if (!shard.whole()) write_shard_record(dir, shard, a.jobs, mine.size());
 
     std::vector<std::uint64_t> todo;
     std::size_t skipped = 0;
-    for (std::uint64_t i = a.first; i < a.first + a.runs; ++i) {
+    for (const std::uint64_t i : mine) {
         const fs::path m = dir / "runs" / run_dir_name(i) / "metrics.yaml";
         bool done = false;
         if (metrics::run_record_complete(m)) {
@@ -201,8 +188,10 @@ int run_montecarlo(const McArgs& a, const CliContext& ctx, bool seed_given) {
         else
             todo.push_back(i);
     }
-    spdlog::info("montecarlo: {} runs of {} (seed {}, runs {}..{}, layout {}, {} jobs) -> {}; {} already complete",
-                 a.runs, s.file.filename().string(), seed, a.first, a.first + a.runs - 1, a.layout, a.jobs,
+    const std::string which =
+        shard.whole() ? "" : " shard " + std::to_string(shard.index) + "/" + std::to_string(shard.count) + ":";
+    spdlog::info("montecarlo:{} {} runs of {} (seed {}, runs {}..{}, layout {}, {} jobs) -> {}; {} already complete",
+                 which, mine.size(), s.file.filename().string(), seed, a.first, a.first + a.runs - 1, a.layout, a.jobs,
                  dir.string(), skipped);
 
     install_stop_signal_handlers();
@@ -230,7 +219,7 @@ int run_montecarlo(const McArgs& a, const CliContext& ctx, bool seed_given) {
         const double remaining = static_cast<double>(todo.size()) * sim_per_run_s - sim_done;
         char line[256];
         std::snprintf(line, sizeof(line), "montecarlo: %zu/%llu runs done, %zu failed, %zu running | %s elapsed, ETA %s | %.0fx real time",
-                      skipped + done_now, static_cast<unsigned long long>(a.runs), failures.size(), workers.size(),
+                      skipped + done_now, static_cast<unsigned long long>(mine.size()), failures.size(), workers.size(),
                       hms(elapsed).c_str(), speed > 0 ? hms(remaining / speed).c_str() : "--", speed);
         if (tty)
             std::fprintf(stderr, "\r%s\033[K%s", line, final_line ? "\n" : "");
@@ -304,21 +293,41 @@ int run_montecarlo(const McArgs& a, const CliContext& ctx, bool seed_given) {
                      done_now);
         return kExitInterrupted;
     }
-    int code = failures.empty() ? 0 : 1;
-    if (!a.no_report) {
-        ReportOptions ro2;
-        ro2.figures = !a.no_figures;
-        const int rc = write_batch_report({dir}, ro2);
+    spdlog::info("montecarlo:{} {} complete runs ({} new, {} skipped), {} failed, {:.1f} s", which, skipped + done_now,
+                 done_now, skipped, failures.size(), steady_now_s() - t0);
+    return failures.empty() ? 0 : 1;
+}
+
+int run_montecarlo(const McArgs& a, const CliContext& ctx) {
+    if (a.mpi) {
+#ifdef GDNAV_HAVE_MPI
+        if (!a.shard.empty()) throw config::ConfigError("montecarlo: --mpi and --shard exclude each other");
+        return run_montecarlo_mpi(a, ctx);
+#else
+        throw config::ConfigError("montecarlo: --mpi: this gdnav was built without MPI (install libopenmpi-dev and "
+                                  "rebuild, see docs/montecarlo.md)");
+#endif
+    }
+    const Shard shard = a.shard.empty() ? Shard{} : parse_shard(a.shard);
+    int code = run_batch_shard(a, ctx, shard);
+    if (code == kExitInterrupted) return code;
+    if (!shard.whole()) {
+        spdlog::info("montecarlo: shard {}/{} done; aggregate the shards with: gdnav report DIR [DIR ...]", shard.index,
+                     shard.count);
+    } else if (!a.no_report) {
+        ReportOptions ro;
+        ro.figures = !a.no_figures;
+        const int rc = write_batch_report({fs::absolute(a.out)}, ro);
         if (rc != 0) code = code ? code : rc;
     }
-    spdlog::info("montecarlo: {} complete runs ({} new, {} skipped), {} failed, {:.1f} s", skipped + done_now, done_now,
-                 skipped, failures.size(), steady_now_s() - t0);
     return code;
 }
 
 CLI::App* add_montecarlo_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
     auto a = std::make_shared<McArgs>();
     auto* sub = app.add_subcommand("montecarlo", "run a Monte Carlo batch (parallel, resumable) and aggregate it");
+    sub->add_option("--shard", a->shard, "run only shard I of N (I/N, 1-based: runs first+k with k mod N = I-1)");
+    sub->add_flag("--mpi", a->mpi, "under mpirun: the ranks share the runs, rank 0 writes the report");
     sub->add_option("--scenario", a->scenario, "1, 2 (paper scenarios), a scenario name or a YAML file");
     sub->add_option("--runs", a->runs, "number of runs")->check(CLI::Range(1, 1000000));
     sub->add_option("--first", a->first, "index of the first run");
@@ -335,7 +344,8 @@ CLI::App* add_montecarlo_command(CLI::App& app, CliContext& ctx, CommandRunner& 
     sub->add_flag("--no-figures", a->no_figures, "aggregate tables only");
     run = [a, sub, &ctx]() {
         setup_logging("gdnav", ctx.log_level);
-        return run_montecarlo(*a, ctx, sub->count("--seed") > 0);
+        a->seed_given = sub->count("--seed") > 0;
+        return run_montecarlo(*a, ctx);
     };
     return sub;
 }

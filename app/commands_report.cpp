@@ -1,4 +1,5 @@
-// gdnav report DIR [DIR2 ...]: the paper's aggregated tables and figures of one or more batch directories.
+// gdnav report DIR [DIR2 ...]: the paper's aggregated tables and figures of one or more batch directories; the
+// directories of one batch (its shards) are merged into one block (batch_merge.hpp).
 #include "commands_report.hpp"
 
 #include <sys/wait.h>
@@ -11,6 +12,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "batch_dir.hpp"
+#include "batch_merge.hpp"
 #include "commands.hpp"
 #include "config/config.hpp"
 #include "metrics/report_tables.hpp"
@@ -36,23 +39,21 @@ std::string batch_label(const fs::path& dir) {
     return label;
 }
 
-std::vector<metrics::RunRecord> complete_runs(const fs::path& dir) {
-    std::vector<fs::path> files;
+// report.py reads one batch folder: for a block of several directories (shards), a folder of links to their runs.
+fs::path runs_view(const std::vector<fs::path>& dirs, const std::vector<metrics::RunRecord>& runs, const fs::path& at) {
+    if (dirs.size() == 1) return dirs.front();
     std::error_code ec;
-    for (const auto& e : fs::directory_iterator(dir / "runs", ec))
-        if (e.is_directory() && fs::exists(e.path() / "metrics.yaml")) files.push_back(e.path() / "metrics.yaml");
-    std::sort(files.begin(), files.end());
-    std::vector<metrics::RunRecord> runs;
-    for (const auto& f : files) {
-        try {
-            metrics::RunRecord r = metrics::read_run_record(f);
-            if (r.complete) runs.push_back(std::move(r));
-        } catch (const config::ConfigError& e) {
-            spdlog::warn("skipping {}: {}", f.string(), e.what());
+    fs::remove_all(at, ec);
+    fs::create_directories(at / "runs");
+    for (const auto& r : runs)
+        for (const auto& d : dirs) {
+            const fs::path run = fs::absolute(d / "runs" / run_dir_name(r.run_index));
+            if (fs::exists(run / "metrics.yaml")) {
+                fs::create_directory_symlink(run, at / "runs" / run_dir_name(r.run_index));
+                break;
+            }
         }
-    }
-    std::sort(runs.begin(), runs.end(), [](const auto& a, const auto& b) { return a.run_index < b.run_index; });
-    return runs;
+    return at;
 }
 
 void write_text(const fs::path& p, const std::string& text) {
@@ -93,19 +94,31 @@ int run_figures(const fs::path& batch, const fs::path& out) {
 
 int write_batch_report(const std::vector<fs::path>& dirs, const ReportOptions& o, std::vector<std::size_t>* counts) {
     if (dirs.empty()) throw config::ConfigError("report: no batch directory given");
+    const std::vector<std::vector<fs::path>> groups = group_batch_dirs(dirs);
     const fs::path out = o.out.empty() ? dirs.front() / "report" : o.out;
     fs::create_directories(out);
     std::vector<metrics::LabelledBatch> batches;
     std::string preamble = "# Aggregated navigation system error (NSE)\n\n";
-    for (const auto& d : dirs) {
-        if (!fs::is_directory(d / "runs")) throw config::ConfigError("report: " + d.string() + " holds no runs/ folder");
+    for (const auto& group : groups) {
         metrics::LabelledBatch b;
-        b.label = batch_label(d);
-        b.runs = complete_runs(d);
+        b.label = batch_label(group.front());
+        MergedRuns merged = merge_complete_runs(group);
+        b.runs = std::move(merged.runs);
         b.aggregate = metrics::aggregate_runs(b.runs);
         if (counts) counts->push_back(b.runs.size());
-        preamble += "- " + b.label + ": " + std::to_string(b.runs.size()) + " complete runs in " + d.string() + "\n";
-        if (b.runs.empty()) spdlog::warn("report: no complete run in {}", d.string());
+        std::string where;
+        for (const auto& d : group) where += (where.empty() ? "" : ", ") + d.string();
+        preamble += "- " + b.label + ": " + std::to_string(b.runs.size()) + " complete runs in " + where;
+        if (!merged.missing.empty()) {
+            preamble += " (missing runs: " + index_ranges(merged.missing) + ")";
+            spdlog::warn("report: {}: {} run(s) of the batch missing or incomplete: {}", where, merged.missing.size(),
+                         index_ranges(merged.missing));
+        }
+        preamble += "\n";
+        if (!merged.duplicates.empty())
+            spdlog::warn("report: {}: run(s) {} found in more than one directory (identical metrics, counted once)",
+                         where, index_ranges(merged.duplicates));
+        if (b.runs.empty()) spdlog::warn("report: no complete run in {}", where);
         batches.push_back(std::move(b));
     }
     preamble += "\nAggregated metrics: mean, population std and max (largest |value|, sign kept; for per-run maxima "
@@ -124,10 +137,13 @@ int write_batch_report(const std::vector<fs::path>& dirs, const ReportOptions& o
     spdlog::info("report: tables written to {}", (out / "tables.md").string());
     int code = 0;
     if (o.figures)
-        for (std::size_t i = 0; i < dirs.size(); ++i)
+        for (std::size_t i = 0; i < groups.size(); ++i)
             if (!batches[i].runs.empty()) {
-                const fs::path fig_out = dirs.size() == 1 ? out : out / ("batch_" + std::to_string(i + 1));
-                code = std::max(code, run_figures(dirs[i], fig_out));
+                const fs::path fig_out = groups.size() == 1 ? out : out / ("batch_" + std::to_string(i + 1));
+                const fs::path view = out / ".runs_view";
+                code = std::max(code, run_figures(runs_view(groups[i], batches[i].runs, view), fig_out));
+                std::error_code ec;
+                fs::remove_all(view, ec);
             }
     return code;
 }
@@ -140,7 +156,7 @@ CLI::App* add_report_command(CLI::App& app, CliContext& ctx, CommandRunner& run)
     };
     auto a = std::make_shared<Args>();
     auto* sub = app.add_subcommand("report", "aggregate a Monte Carlo batch: the paper's tables and figures");
-    sub->add_option("dirs", a->dirs, "batch directories (gdnav montecarlo --out); several: side by side")->required();
+    sub->add_option("dirs", a->dirs, "batch directories (gdnav montecarlo --out); shards of one batch: merged; batches: side by side")->required();
     sub->add_option("--out", a->out, "output folder (default: <first dir>/report)");
     sub->add_flag("--no-figures", a->no_figures, "tables only");
     run = [a, &ctx]() {

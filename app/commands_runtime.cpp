@@ -187,9 +187,13 @@ CLI::App* add_bench_command(CLI::App& app, CliContext& ctx, CommandRunner& run) 
     sub->add_option("--scenario", a->scenario, "scenario name or YAML file");
     sub->add_option("--steps", a->steps, "steps per measurement");
     sub->add_option("--layouts", a->layouts, "layouts to measure")->delimiter(',');
+    sub->add_option("--mc-runs", a->mc_runs, "runs of scenarios #1 and #2 for the Monte Carlo throughput (0: skip)");
+    sub->add_option("--mc-steps", a->mc_steps, "steps of each of those runs (default: full length)");
+    sub->add_option("--mc-jobs", a->mc_jobs, "runs in parallel in that measurement")->check(CLI::Range(1, 256));
+    sub->add_option("--json", a->json, "also write the figures to this JSON file");
     run = [a, &ctx]() {
         setup_logging("gdnav", ctx.log_level);
-        return run_bench(*a, ctx.registry);
+        return run_bench(*a, ctx);
     };
     return sub;
 }

@@ -19,6 +19,7 @@ packages=(
   cyclonedds-dev cyclonedds-tools
   libeigen3-dev libyaml-cpp-dev libspdlog-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev libgeographiclib-dev libhdf5-dev
+  libopenmpi-dev openmpi-bin
   python3 python3-numpy python3-matplotlib python3-h5py python3-dev pybind11-dev
   iproute2 procps
 )

@@ -1,0 +1,46 @@
+#pragma once
+// gdnav montecarlo, shared by the command (commands_montecarlo.cpp), the MPI launcher (montecarlo_mpi.cpp) and the
+// benchmark (bench.cpp): a batch, or one shard of it, run as parallel `gdnav run` child processes into a batch
+// directory (batch_dir.hpp).
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "batch_dir.hpp"
+#include "command.hpp"
+#include "scenario_overrides.hpp"
+
+namespace gdnav::app {
+
+struct McArgs {
+    std::string scenario{"1"};
+    std::uint64_t runs{1};
+    std::uint64_t first{0};
+    std::uint64_t seed{1};
+    bool seed_given{false};  // --seed given (else the scenario file's seed, or 1)
+    unsigned jobs{2};
+    std::string layout{"direct"};
+    std::string out;
+    std::uint64_t steps{0};
+    scenario::Overrides o;
+    bool no_report{false};
+    bool no_figures{false};
+    std::string shard;  // "I/N" (empty: the whole batch)
+    bool mpi{false};
+};
+
+// Runs shard `s` of the batch (Shard{} = every run) into a.out and returns 0 when each of its runs is complete,
+// 1 when some failed, 130 when interrupted; configuration errors throw config::ConfigError before anything runs.
+// No report (see write_batch_report).
+int run_batch_shard(const McArgs& a, const CliContext& ctx, const Shard& s);
+
+// The whole command: the batch or its --shard, then (whole batch only, unless --no-report) the report.
+int run_montecarlo(const McArgs& a, const CliContext& ctx);
+
+#ifdef GDNAV_HAVE_MPI
+// mpirun -np N gdnav montecarlo --mpi ...: rank r runs shard r+1 of N; rank 0 gathers the ranks' metrics and writes
+// the report (montecarlo_mpi.cpp). Returns the rank's exit code (rank 0: the batch's).
+int run_montecarlo_mpi(const McArgs& a, const CliContext& ctx);
+#endif
+
+}  // namespace gdnav::app
