@@ -14,6 +14,7 @@
 #include "runtime/dds_context.hpp"
 #include "runtime/faults/input_faults.hpp"
 #include "runtime/graph.hpp"
+#include "runtime/host_inbox.hpp"
 #include "runtime/lateness.hpp"
 #include "runtime/lockstep.hpp"
 #include "runtime/messages.hpp"
@@ -24,40 +25,8 @@ namespace gdnav::runtime {
 using namespace eprosima::fastdds::dds;
 using eprosima::fastrtps::Duration_t;
 
-namespace {
-
-// Inbox of one input port: samples indexed by step (ring), or the latest sample for free-running producers.
-struct Channel {
-    InputBase* port{nullptr};
-    DataReader* reader{nullptr};
-    const MessageOps* ops{nullptr};
-    void* scratch{nullptr};
-    std::array<void*, kInboxRing> slot{};
-    std::array<std::uint64_t, kInboxRing> slot_step{};
-    std::array<bool, kInboxRing> full{};
-    void* latest{nullptr};
-    bool has_latest{false};
-    std::vector<std::uint32_t> producers;  // member indices in the table
-    bool free{false};                      // produced by a free-running member
-    bool lost{false};                      // every producer declared dead
-    Lateness lateness;                     // free channels: how late the samples used were
-    std::unique_ptr<faults::InputFaults> faults;  // scheduled faults on this input (nullptr: none)
-    std::uint64_t lost_until{0};  // its producer rejoined: samples of steps below this one are lost
-    bool revived{false};
-};
-
-struct Local {
-    Component* comp{nullptr};
-    std::uint32_t index{0};
-    std::uint64_t next_step{0};
-    bool killed{false};            // stopped by a scheduled kill (not stepped until its restart)
-    bool awaiting_rejoin{false};   // --rejoin: not stepped before the clock assigns its first step
-    std::uint64_t restarted_at{UINT64_MAX};
-    std::vector<Channel*> inputs;
-    std::vector<std::pair<OutputBase*, DataWriter*>> outputs;
-};
-
-}  // namespace
+using host::Channel;
+using host::Local;
 
 struct DdsHost::Impl {
     const RunConfig& rc;
@@ -157,9 +126,10 @@ struct DdsHost::Impl {
                 channels.push_back(std::move(ch));
             }
             for (OutputBase* o : c->outputs())
-                l.outputs.emplace_back(o, dds->writer(o->topic(), o->ops(), kDataWriterProfile));
+                l.outputs.push_back({o, dds->writer(o->topic(), o->ops(), kDataWriterProfile), {}});
             locals.push_back(std::move(l));
         }
+        host::route_locally(locals);
         for (DataReader* r : {control_reader, status_reader}) {
             StatusCondition& cond = r->get_statuscondition();
             cond.set_enabled_statuses(StatusMask::data_available());
@@ -410,12 +380,12 @@ struct DdsHost::Impl {
                 ch->reader->get_subscription_matched_status(st);
                 if (st.current_count < static_cast<int>(ch->producers.size())) return false;
             }
-            for (auto& [out, w] : l.outputs) {
+            for (auto& o : l.outputs) {
                 int expected = 0;
                 for (const auto& m : table)
-                    for (const auto& t : split_topics(m.inputs().to_string())) expected += (t == out->topic());
+                    for (const auto& t : split_topics(m.inputs().to_string())) expected += (t == o.port->topic());
                 PublicationMatchedStatus st;
-                w->get_publication_matched_status(st);
+                o.writer->get_publication_matched_status(st);
                 if (st.current_count < expected) return false;
             }
         }
@@ -473,20 +443,31 @@ struct DdsHost::Impl {
                 continue;
             }
             const std::uint64_t s = ch.ops->step_of(ch.scratch);
-            const std::uint64_t lag = static_cast<std::uint64_t>(ch.port->lag());
-            const std::uint64_t oldest = l.next_step >= lag ? l.next_step - lag : 0;
-            if (s < oldest) continue;
-            if (s >= oldest + kInboxRing) {
-                if (l.killed) continue;  // a member killed by a fault does not read its inputs
-                spdlog::warn("input '{}': sample of step {} is too far ahead of step {}; dropped", ch.port->topic(), s,
-                             l.next_step);
+            const long at = host::inbox_index(ch, l.next_step, s);
+            if (at == host::kOlder) continue;
+            if (at == host::kTooFar) {
+                warn_too_far(l, ch, s);
                 continue;
             }
-            const std::size_t i = s % kInboxRing;
+            const auto i = static_cast<std::size_t>(at);
             std::swap(ch.slot[i], ch.scratch);
             ch.slot_step[i] = s;
             ch.full[i] = true;
         }
+    }
+
+    static void warn_too_far(const Local& l, const Channel& ch, std::uint64_t s) {
+        if (l.killed) return;  // a member killed by a fault does not read its inputs
+        spdlog::warn("input '{}': sample of step {} is too far ahead of step {}; dropped", ch.port->topic(), s,
+                     l.next_step);
+    }
+
+    // A local member's output of step k: into the inboxes of the local readers, and on DDS if anyone outside reads it.
+    void publish(host::Output& o, std::uint64_t k) {
+        for (const auto& r : o.routes)
+            if (!host::hand_over(r, locals[r.consumer], o.port->data(), k))
+                warn_too_far(locals[r.consumer], *r.channel, k);
+        if (o.routes.empty() || host::read_outside(o)) o.writer->write(o.port->data());
     }
 
     bool inputs_ready(const Local& l, std::uint64_t k) {
@@ -543,7 +524,7 @@ struct DdsHost::Impl {
             l.inputs[n]->port = fresh->inputs()[n];
             if (l.inputs[n]->lost) l.inputs[n]->port->mark_lost();
         }
-        for (std::size_t n = 0; n < l.outputs.size(); ++n) l.outputs[n].first = fresh->outputs()[n];
+        for (std::size_t n = 0; n < l.outputs.size(); ++n) l.outputs[n].port = fresh->outputs()[n];
         for (auto& c : owned)
             if (c.get() == l.comp) c = std::move(fresh), l.comp = c.get();
         l.killed = false;
@@ -600,9 +581,9 @@ struct DdsHost::Impl {
                 record_lateness(l, k);
                 const StepContext ctx{k, ri.time_of(k), ri.dt_s, k + 1 == ri.steps};
                 l.comp->step(ctx);
-                for (auto& [out, w] : l.outputs) {
-                    out->ops().set_stamp(out->data(), ri.run_index, k, ctx.t_s);
-                    w->write(out->data());
+                for (auto& o : l.outputs) {
+                    o.port->ops().set_stamp(o.port->data(), ri.run_index, k, ctx.t_s);
+                    publish(o, k);
                 }
                 for (auto& m : l.comp->pending_status()) {
                     spdlog::info("[{}] step {} t={:.2f} s: {}", l.comp->name(), k, ctx.t_s, m);

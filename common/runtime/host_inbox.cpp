@@ -1,0 +1,48 @@
+#include "runtime/host_inbox.hpp"
+
+#include <fastdds/dds/core/status/PublicationMatchedStatus.hpp>
+
+namespace gdnav::runtime::host {
+
+long inbox_index(const Channel& ch, std::uint64_t next_step, std::uint64_t s) {
+    const auto lag = static_cast<std::uint64_t>(ch.port->lag());
+    const std::uint64_t oldest = next_step >= lag ? next_step - lag : 0;
+    if (s < oldest) return kOlder;
+    if (s >= oldest + kInboxRing) return kTooFar;
+    return static_cast<long>(s % kInboxRing);
+}
+
+void route_locally(std::vector<Local>& locals) {
+    for (auto& producer : locals)
+        for (auto& o : producer.outputs) {
+            o.routes.clear();
+            for (std::size_t c = 0; c < locals.size(); ++c)
+                for (Channel* ch : locals[c].inputs)
+                    if (ch->port->topic() == o.port->topic()) o.routes.push_back({c, ch});
+        }
+}
+
+bool hand_over(const Route& r, const Local& consumer, const void* sample, std::uint64_t s) {
+    Channel& ch = *r.channel;
+    if (ch.free) {
+        ch.ops->copy(ch.latest, sample);
+        ch.has_latest = true;
+        return true;
+    }
+    const long i = inbox_index(ch, consumer.next_step, s);
+    if (i == kOlder) return true;  // no step of the reader needs it (as with a DDS sample)
+    if (i == kTooFar) return false;
+    const auto u = static_cast<std::size_t>(i);
+    ch.ops->copy(ch.slot[u], sample);
+    ch.slot_step[u] = s;
+    ch.full[u] = true;
+    return true;
+}
+
+bool read_outside(const Output& o) {
+    eprosima::fastdds::dds::PublicationMatchedStatus st;
+    o.writer->get_publication_matched_status(st);
+    return st.current_count > static_cast<int>(o.routes.size());
+}
+
+}  // namespace gdnav::runtime::host
