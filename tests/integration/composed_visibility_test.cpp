@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <thread>
 
 #include <fastdds/dds/subscriber/DataReader.hpp>
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
@@ -53,7 +54,8 @@ TEST(ComposedVisibility, AReaderOutsideTheProcessSeesEveryStepOfALocallyHandedTo
         }
         if (!any) {
             if (code != -1) break;  // the run ended and everything it sent is read
-            code = wait_for(launcher, 0.001);  // one check (and a 10-ms pause while the run goes on)
+            code = wait_for(launcher, 0.0);  // has it ended?
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
         }
     }
     if (code == -1) code = wait_for(launcher, 5.0);

@@ -62,12 +62,13 @@ pid_t start(const std::vector<std::string>& argv, const fs::path& log) {
 
 int wait_for(pid_t pid, double timeout_s) {
     const double end = now_s() + timeout_s;
-    while (now_s() < end) {
+    do {  // checked at least once: a timeout of 0 asks whether it has ended
         int st = 0;
         const pid_t r = waitpid(pid, &st, WNOHANG);
         if (r == pid) return decode(st);
+        if (now_s() >= end) break;
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
+    } while (now_s() < end);
     return -1;
 }
 

@@ -20,7 +20,7 @@ Result run(const std::vector<std::string>& argv, double timeout_s = 120.0);
 
 // Starts argv in the background with output to `log`; returns its pid.
 pid_t start(const std::vector<std::string>& argv, const std::filesystem::path& log);
-// Waits for pid; returns exit code (128 + signal) or -1 on timeout.
+// Waits for pid; returns exit code (128 + signal) or -1 on timeout (timeout 0: one check, no wait).
 int wait_for(pid_t pid, double timeout_s);
 
 // A run and an external member started together (gdnav run ... --external NAME, and the member), both waited for;
