@@ -126,7 +126,7 @@ struct DdsHost::Impl {
                 channels.push_back(std::move(ch));
             }
             for (OutputBase* o : c->outputs())
-                l.outputs.push_back({o, dds->writer(o->topic(), o->ops(), kDataWriterProfile), {}});
+                l.outputs.push_back(host::make_output(o, dds->writer(o->topic(), o->ops(), kDataWriterProfile)));
             locals.push_back(std::move(l));
         }
         host::route_locally(locals);

@@ -39,10 +39,15 @@ bool hand_over(const Route& r, const Local& consumer, const void* sample, std::u
     return true;
 }
 
-bool read_outside(const Output& o) {
-    eprosima::fastdds::dds::PublicationMatchedStatus st;
-    o.writer->get_publication_matched_status(st);
-    return st.current_count > static_cast<int>(o.routes.size());
+Output make_output(OutputBase* port, eprosima::fastdds::dds::DataWriter* writer) {
+    Output o{port, writer, {}, std::make_unique<MatchCount>()};
+    writer->set_listener(o.matched.get(), eprosima::fastdds::dds::StatusMask::publication_matched());
+    eprosima::fastdds::dds::PublicationMatchedStatus st;  // matches made before the listener was set
+    writer->get_publication_matched_status(st);
+    o.matched->readers.store(st.current_count);
+    return o;
 }
+
+bool read_outside(const Output& o) { return o.matched->readers.load() > static_cast<int>(o.routes.size()); }
 
 }  // namespace gdnav::runtime::host

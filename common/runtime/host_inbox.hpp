@@ -4,12 +4,14 @@
 // the local members that read it (a copy, no serialisation, no transport, no thread wake-up); it is published on DDS
 // only while a reader outside the process is matched (another process's member, a recorder, a monitoring tool).
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <utility>
 #include <vector>
 
 #include <fastdds/dds/publisher/DataWriter.hpp>
+#include <fastdds/dds/publisher/DataWriterListener.hpp>
 #include <fastdds/dds/subscriber/DataReader.hpp>
 
 #include "runtime/component.hpp"
@@ -45,11 +47,24 @@ struct Route {
     Channel* channel{nullptr};
 };
 
+// The matched-reader count of a writer, kept by Fast DDS's matching callback (so the step does not ask for it).
+struct MatchCount final : eprosima::fastdds::dds::DataWriterListener {
+    std::atomic<int> readers{0};
+    void on_publication_matched(eprosima::fastdds::dds::DataWriter*,
+                                const eprosima::fastdds::dds::PublicationMatchedStatus& st) override {
+        readers.store(st.current_count);
+    }
+};
+
 struct Output {
     OutputBase* port{nullptr};
     eprosima::fastdds::dds::DataWriter* writer{nullptr};
     std::vector<Route> routes;  // local readers (their DDS readers are matched too: not counted as outside ones)
+    std::unique_ptr<MatchCount> matched;  // listener of `writer` (outlives it: the host deletes DDS first)
 };
+
+// An output of a local member: its writer, with the matched-reader count kept up to date.
+Output make_output(OutputBase* port, eprosima::fastdds::dds::DataWriter* writer);
 
 struct Local {
     Component* comp{nullptr};
