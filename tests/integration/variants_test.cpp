@@ -12,7 +12,8 @@ using namespace gdnav::testing;
 
 TEST(Variants, EveryVariantRunsEndToEndByConfigAlone) {
     for (const char* v : {"baseline", "att_zero_fb_derivatives", "att_zero_fn_derivatives", "hor_double_integration",
-                          "hor_wind_integration", "ver_integration", "ver_airspeed_integration"}) {
+                          "hor_wind_integration", "ver_integration", "ver_airspeed_integration",
+                          "att_error_state", "eskf_mean_wind"}) {
         SCOPED_TRACE(v);
         const auto out = temp_dir(std::string("variant-") + v);
         const Result r = run({GDNAV_GDNAV_EXE, "montecarlo", "--scenario", "2", "--runs", "1", "--jobs", "1",

@@ -24,6 +24,12 @@ att::SpecificForceModel parse_specific_force_model(const config::Config& variant
     return att::SpecificForceModel::kBaseline;
 }
 
+AttitudeFormulation parse_attitude_formulation(const config::Config& variant) {
+    return variant.get_choice("filter", "additive", {"additive", "error_state"}) == "error_state"
+               ? AttitudeFormulation::kErrorState
+               : AttitudeFormulation::kAdditive;
+}
+
 void AttitudeFilter::configure(const config::Config& tuning, const config::Config& variant, rnd::Stream stream) {
     Tuning t;
     t.dt_s = tuning.get_double("dt_s", Range{1e-4, 1.0});
@@ -49,6 +55,7 @@ void AttitudeFilter::configure(const config::Config& tuning, const config::Confi
     t.init_sigmas.b_dev_nT = im.get_vec3("b_dev_sigma_nT", Range{0.0, kMaxSigma});
     t.align_q_p0 = init.child("alignment").get_double("q_p0", Range{0.0, 1.0});
     t.model = parse_specific_force_model(variant);
+    t.formulation = parse_attitude_formulation(variant);
     tuning.finish();
     variant.finish();
     configure(t, stream);
@@ -56,6 +63,7 @@ void AttitudeFilter::configure(const config::Config& tuning, const config::Confi
 
 void AttitudeFilter::configure(const Tuning& tuning, rnd::Stream stream) {
     tun_ = tuning;
+    qe_diag_ = eskf::process_noise(tun_.q_diag);
     stream_ = stream;
     rej_ = {};
     pos_held_valid_ = false;
@@ -119,6 +127,7 @@ AttitudeEstimate AttitudeFilter::initialize(std::uint64_t k, double t_s, const A
     p_.diagonal().segment<3>(att::kEgyr) = in.gyr_bias_sigma_rps.array().square();
     p_.diagonal().segment<3>(att::kEmag) = in.mag_bias_sigma_nT.array().square();
     p_.diagonal().segment<3>(att::kBdev) = in.b_dev_sigma_nT.array().square();
+    pe_ = eskf::from_additive(x_, p_);
     initialized_ = true;
     return output(k, t_s);
 }
@@ -128,13 +137,21 @@ void AttitudeFilter::normalise_quaternion() { x_.segment<4>(att::kQ).normalize()
 AttitudeEstimate AttitudeFilter::step(std::uint64_t k, double t_s, const ImuSample& imu, const MagSample& mag,
                                       const PositionEstimate& pos_prev) {
     if (!initialized_) throw std::logic_error("AttitudeFilter::step before initialize");
+    const bool error_state = tun_.formulation == AttitudeFormulation::kErrorState;
     // Propagate.
     // A is zero outside its leading 7x7 block (q rows, q and w_nb columns): Phi = diag(Phi_7, I).
-    const filters::SqMat<att::kJ> phi = filters::transition_matrix<att::kJ>(
-        att::state_jacobian(x_).topLeftCorner<att::kJ, att::kJ>(), tun_.dt_s, tun_.transition_order);
-    x_ += tun_.dt_s * att::derivative(x_);
-    normalise_quaternion();
-    filters::propagate_covariance_leading_diag<att::kN, att::kJ>(p_, phi, tun_.q_diag);
+    if (error_state) {
+        filters::propagate_covariance_leading_diag<eskf::kN, eskf::kJ>(
+            pe_, eskf::transition_leading(x_, tun_.dt_s), qe_diag_);  // Phi at x+(k-1), as the additive filter
+        x_ += tun_.dt_s * att::derivative(x_);
+        normalise_quaternion();
+    } else {
+        const filters::SqMat<att::kJ> phi = filters::transition_matrix<att::kJ>(
+            att::state_jacobian(x_).topLeftCorner<att::kJ, att::kJ>(), tun_.dt_s, tun_.transition_order);
+        x_ += tun_.dt_s * att::derivative(x_);
+        normalise_quaternion();
+        filters::propagate_covariance_leading_diag<att::kN, att::kJ>(p_, phi, tun_.q_diag);
+    }
     // Input checks: a rejected previous position estimate is replaced by the last good one.
     bool pos_good = checks::position_estimate_ok(pos_prev);
     if (pos_good) {
@@ -153,6 +170,10 @@ AttitudeEstimate AttitudeFilter::step(std::uint64_t k, double t_s, const ImuSamp
     const att::PnVector pn = att::make_pn(pos_held_valid_ ? pos_held_ : pos_prev);
     att::MeasVec y;
     y << imu.w_b_rps, imu.f_b_mps2, mag.b_b_nT;
+    if (error_state) {
+        step_error_state(imu_good, mag_good, y, pn);
+        return output(k, t_s);
+    }
     if (imu_good && mag_good) {
         const att::MeasVec r = y - att::observe(x_, pn, tun_.model);
         const auto info = filters::joseph_update_diag<att::kN, att::kM>(
@@ -177,7 +198,28 @@ AttitudeEstimate AttitudeFilter::step(std::uint64_t k, double t_s, const ImuSamp
     return output(k, t_s);
 }
 
+void AttitudeFilter::step_error_state(bool imu_good, bool mag_good, const att::MeasVec& y, const att::PnVector& pn) {
+    last_nis_ = 0.0;
+    if (!imu_good && !mag_good) return;
+    const att::MeasVec r = y - att::observe(x_, pn, tun_.model);
+    const eskf::ErrJac h = eskf::observation_jacobian(x_, pn, tun_.model);
+    eskf::ErrVec dx = eskf::ErrVec::Zero();
+    if (imu_good && mag_good) {
+        last_nis_ = filters::joseph_update_diag<eskf::kN, att::kM>(dx, pe_, r, h, tun_.r_diag).nis;
+    } else if (imu_good) {
+        last_nis_ = filters::joseph_update_diag<eskf::kN, 6>(dx, pe_, r.head<6>().eval(), h.topRows<6>().eval(),
+                                                             tun_.r_diag.head<6>().eval())
+                        .nis;
+    } else {
+        last_nis_ = filters::joseph_update_diag<eskf::kN, 3>(dx, pe_, r.tail<3>().eval(), h.bottomRows<3>().eval(),
+                                                             tun_.r_diag.tail<3>().eval())
+                        .nis;
+    }
+    eskf::inject(x_, pe_, dx);
+}
+
 Eigen::Matrix3d AttitudeFilter::attitude_covariance_n() const {
+    if (tun_.formulation == AttitudeFormulation::kErrorState) return pe_.topLeftCorner<3, 3>();
     const filters::Mat34 g = filters::att_error_jacobian(x_.segment<4>(att::kQ));
     return g * p_.block<4, 4>(att::kQ, att::kQ) * g.transpose();
 }

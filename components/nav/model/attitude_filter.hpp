@@ -11,6 +11,8 @@
 //        P- = Phi P Phi^T + Q;  y = [w~, f~, B~], Joseph update with H at x-, normalise q.
 // Variant (`attitude.specific_force` of a variant file): baseline | zero_fb_derivatives | zero_fn_derivatives;
 // only the coupling term of the specific-force observation differs (att::coupling_velocity_n).
+// Variant `attitude.filter` (optional, default additive): additive (above, the paper's) | error_state (the
+// multiplicative error-state EKF of eskf_attitude.hpp on the same nominal state, model and observations).
 // Tuning (config/nav/tuning.yaml, `attitude`): Q and R as the reference "configuration #4" (models-nav.md §4.4),
 // initialisation as nav_init.hpp.
 // Input checks (input_checks.hpp): an ImuSample (rows gyro + accelerometer) or MagSample (rows magnetometer) that is
@@ -20,6 +22,7 @@
 #include <cstdint>
 
 #include "attitude_model.hpp"
+#include "eskf_attitude.hpp"
 #include "config/config.hpp"
 #include "input_checks.hpp"
 #include "math/rotation.hpp"
@@ -43,6 +46,8 @@ struct AttitudeInit {
     Vec3 b_dev_sigma_nT{Vec3::Zero()};
 };
 
+enum class AttitudeFormulation { kAdditive, kErrorState };
+
 class AttitudeFilter {
 public:
     struct Tuning {
@@ -51,6 +56,7 @@ public:
         att::StateVec q_diag = att::StateVec::Zero();
         att::MeasVec r_diag = att::MeasVec::Zero();
         att::SpecificForceModel model{att::SpecificForceModel::kBaseline};
+        AttitudeFormulation formulation{AttitudeFormulation::kAdditive};
         InitMode init_mode{InitMode::kMeasurements};
         MeasurementInitSigmas init_sigmas;
         double align_q_p0{1e-8};  // alignment mode: P0 per quaternion component (reference); 0: use the sigma
@@ -72,6 +78,7 @@ public:
                                 const Alignment* align = nullptr);
     AttitudeEstimate initialize(std::uint64_t k, double t_s, const AttitudeInit& init);
 
+
     AttitudeEstimate step(std::uint64_t k, double t_s, const ImuSample& imu, const MagSample& mag,
                           const PositionEstimate& pos_prev);
 
@@ -86,7 +93,8 @@ public:
 
     [[nodiscard]] bool initialized() const { return initialized_; }
     [[nodiscard]] const att::StateVec& state() const { return x_; }
-    [[nodiscard]] const att::StateCov& covariance() const { return p_; }
+    [[nodiscard]] const att::StateCov& covariance() const { return p_; }  // additive formulation only
+    [[nodiscard]] const eskf::ErrCov& error_covariance() const { return pe_; }  // error_state formulation only
     [[nodiscard]] const Tuning& tuning() const { return tun_; }
     [[nodiscard]] double last_nis() const { return last_nis_; }
     [[nodiscard]] Quat estimate_q() const { return math::from_wxyz(x_.segment<4>(att::kQ)); }
@@ -96,11 +104,14 @@ public:
 private:
     AttitudeEstimate output(std::uint64_t k, double t_s) const;
     void normalise_quaternion();
+    void step_error_state(bool imu_good, bool mag_good, const att::MeasVec& y, const att::PnVector& pn);
 
     Tuning tun_;
     rnd::Stream stream_;
     att::StateVec x_ = att::StateVec::Zero();
     att::StateCov p_ = att::StateCov::Zero();
+    eskf::ErrCov pe_ = eskf::ErrCov::Zero();
+    eskf::ErrVec qe_diag_ = eskf::ErrVec::Zero();
     double last_nis_{0.0};
     Rejections rej_;
     PositionEstimate pos_held_;  // last PositionEstimate that passed the checks
@@ -110,5 +121,7 @@ private:
 
 // Parses `specific_force: baseline | zero_fb_derivatives | zero_fn_derivatives`.
 att::SpecificForceModel parse_specific_force_model(const config::Config& variant);
+// Parses the optional `filter: additive | error_state` (default additive).
+AttitudeFormulation parse_attitude_formulation(const config::Config& variant);
 
 }  // namespace gdnav::nav

@@ -57,6 +57,7 @@ void PositionFilter::configure(const config::Config& tuning, const config::Confi
     t.reacquire_dr_bound_rate_mps = gi.get_double("reacquire_dr_bound_rate_mps", Range{0.0, 1.0e4});
     t.horizontal = parse_horizontal_rule(variant);
     t.vertical = parse_vertical_rule(variant);
+    t.frozen_wind_average_s = variant.get_double("frozen_wind_average_s", 0.0, Range{0.0, 1000.0});
     tuning.finish();
     variant.finish();
     configure(t, stream);
@@ -108,7 +109,7 @@ PositionEstimate PositionFilter::initialize(std::uint64_t k, double t_s, const I
     const Eigen::Matrix3d cov_fe = -Eigen::Matrix3d(acc_err_sigma0.array().square().matrix().asDiagonal());
     p_.block<3, 3>(aided::kF, aided::kE) = cov_fe;
     p_.block<3, 3>(aided::kE, aided::kF) = cov_fe;
-    wind_lp_ = wind_at_fix_ = wind_instant(air, att);
+    wind_lp_ = wind_at_fix_ = wind_avg_ = wind_instant(air, att);
     dp_lp_ = dp_at_fix_ = dp_instant(air);
     monitor_.reset(t_s);
     lost_event_ = reacquired_event_ = false;
@@ -243,10 +244,15 @@ bool PositionFilter::aided_step(const ImuSample& imu, bool imu_good, const GnssS
     x_(aided::kLon) = math::wrap_pi(x_(aided::kLon));
     // GNSS-based wind and pressure offset (first-order low pass).
     const double a = dt / (tun_.lowpass_time_constant_s + dt);
-    wind_lp_ = (1.0 - a) * wind_lp_ + a * wind_instant(air, att);
+    const Vec3 wind_now = wind_instant(air, att);
+    wind_lp_ = (1.0 - a) * wind_lp_ + a * wind_now;
     dp_lp_ = (1.0 - a) * dp_lp_ + a * dp_instant(air);
+    if (tun_.frozen_wind_average_s > 0.0) {  // the mean wind for the denied phase (variant frozen_wind_average_s)
+        const double b = dt / (tun_.frozen_wind_average_s + dt);
+        wind_avg_ = (1.0 - b) * wind_avg_ + b * wind_now;
+    }
     if (use_fix) {
-        wind_at_fix_ = wind_lp_;
+        wind_at_fix_ = tun_.frozen_wind_average_s > 0.0 ? wind_avg_ : wind_lp_;
         dp_at_fix_ = dp_lp_;
     }
     return accepted;
@@ -343,7 +349,7 @@ void PositionFilter::reacquire(double t_s, const GnssSample& gnss, const AirData
     p_.block<3, 3>(aided::kE, aided::kF) = pd_.bottomLeftCorner<3, 3>();
     p_.block<3, 3>(aided::kE, aided::kE) = pd_.bottomRightCorner<3, 3>();
     set_fix_covariance(gnss.lat_rad, gnss.h_m);
-    wind_lp_ = wind_at_fix_ = wind_instant(air, att);
+    wind_lp_ = wind_at_fix_ = wind_avg_ = wind_instant(air, att);
     dp_lp_ = dp_at_fix_ = dp_instant(air);
     monitor_.reacquire(t_s);
     denied_reason_ = DeniedReason::kNone;

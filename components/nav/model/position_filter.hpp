@@ -69,6 +69,9 @@ public:
         double init_acc_bias_sigma_mps2{0.157};  // measurements mode
         denied::HorizontalRule horizontal{denied::HorizontalRule::kFrozenWind};
         denied::VerticalRule vertical{denied::VerticalRule::kPressure};
+        // Variant `frozen_wind_average_s` (optional): > 0 freezes for the denied phase a low pass of the GNSS-based
+        // wind with this time constant instead of the 3 s one (the mean wind rather than the current gust).
+        double frozen_wind_average_s{0.0};
         // GNSS integrity (gnss_integrity section)
         double gate_chi2_6dof{40.0};
         int gate_max_consecutive_rejections{5};
@@ -151,6 +154,7 @@ private:
     aided::StateVec x_ = aided::StateVec::Zero();
     aided::StateCov p_ = aided::StateCov::Zero();
     Vec3 wind_lp_{Vec3::Zero()};
+    Vec3 wind_avg_{Vec3::Zero()};  // long low pass of the GNSS-based wind (frozen_wind_average_s > 0)
     double dp_lp_{0.0};
     Vec3 wind_at_fix_{Vec3::Zero()};
     double dp_at_fix_{0.0};

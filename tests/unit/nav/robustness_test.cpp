@@ -146,6 +146,42 @@ TEST(NavInputChecks, AttitudeFilterRejectsBadSamples) {
     EXPECT_THROW(f.initialize(0, 0.0, imu, r.data[0].mag, r.air[0], r.data[0].gnss, nullptr), std::invalid_argument);
 }
 
+// Issue 14: the same input checks in the error-state formulation (a rejected pair propagates only).
+TEST(NavInputChecks, ErrorStateAttitudeFilterRejectsBadSamples) {
+    const test::ChainRun& r = clean_run();
+    const rnd::Stream root = rnd::Stream::derive(1, 0, "t");
+    const config::Config variant =
+        config::Config::parse("specific_force: baseline\nfilter: error_state\n", "error-state variant");
+    AttitudeFilter clean, bad;
+    for (AttitudeFilter* f : {&clean, &bad}) {
+        f->configure(tuning_section("attitude"), variant, root);
+        f->initialize(0, 0.0, r.data[0].imu, r.data[0].mag, r.air[0], r.data[0].gnss, nullptr);
+    }
+    for (std::size_t k = 1; k < r.data.size(); ++k) {
+        ImuSample imu = r.data[k].imu;
+        MagSample mag = r.data[k].mag;
+        PositionEstimate pos = r.pos[k - 1];
+        if (k == 100) imu.w_b_rps.x() = kNaN, mag.b_b_nT.z() = kInf;  // both bad: propagation only
+        if (k == 200) imu.f_b_mps2.z() = kInf;                           // IMU bad: magnetometer rows only
+        if (k == 300) mag.b_b_nT.y() = 1e7;                              // magnetometer bad: IMU rows only
+        if (k == 400) pos.v_n_mps.x() = kNaN;                            // p_n source bad: the last good one
+        const att::StateVec x0 = bad.state();
+        clean.step(k, 0.01 * k, r.data[k].imu, r.data[k].mag, r.pos[k - 1]);
+        bad.step(k, 0.01 * k, imu, mag, pos);
+        ASSERT_TRUE(all_finite(bad.state()) && all_finite(bad.error_covariance())) << k;
+        if (k == 100) {
+            att::StateVec x = x0 + bad.tuning().dt_s * att::derivative(x0);
+            x.segment<4>(att::kQ).normalize();
+            EXPECT_LT((bad.state() - x).cwiseAbs().maxCoeff(), 1e-12) << k;
+            EXPECT_EQ(bad.last_nis(), 0.0);
+        }
+    }
+    EXPECT_EQ(bad.rejections().imu, 2u);
+    EXPECT_EQ(bad.rejections().mag, 2u);
+    EXPECT_EQ(bad.rejections().position, 1u);
+    EXPECT_LT(math::rad2deg(math::angle_between(bad.estimate_q(), clean.estimate_q())), 0.01);
+}
+
 TEST(NavInputChecks, AttitudeFilterHoldsTheLastGoodPositionEstimate) {
     // A rejected p_n source gives exactly the step fed with the last good PositionEstimate.
     const test::ChainRun& r = clean_run();

@@ -365,6 +365,8 @@ TEST(NavVariantDefinitions, EachVariantFileSelectsItsRuleAndKeepsTheOthersAtBase
         att::SpecificForceModel model;
         HorizontalRule hor;
         VerticalRule ver;
+        AttitudeFormulation form{AttitudeFormulation::kAdditive};  // issue 14: the error-state filter
+        double frozen_wind_average_s{0.0};                         // issue 14: the mean-wind freeze
     };
     const Expected table[] = {
         {"baseline", kBase, HorizontalRule::kFrozenWind, VerticalRule::kPressure},
@@ -374,6 +376,10 @@ TEST(NavVariantDefinitions, EachVariantFileSelectsItsRuleAndKeepsTheOthersAtBase
         {"hor_wind_integration", kBase, HorizontalRule::kWindIntegration, VerticalRule::kPressure},
         {"ver_integration", kBase, HorizontalRule::kFrozenWind, VerticalRule::kIntegration},
         {"ver_airspeed_integration", kBase, HorizontalRule::kFrozenWind, VerticalRule::kAirspeedIntegration},
+        {"att_error_state", kBase, HorizontalRule::kFrozenWind, VerticalRule::kPressure,
+         AttitudeFormulation::kErrorState},
+        {"eskf_mean_wind", kBase, HorizontalRule::kFrozenWind, VerticalRule::kPressure, AttitudeFormulation::kErrorState,
+         45.0},
     };
     const std::string dir = std::string(GDNAV_SOURCE_DIR) + "/config/nav/";
     for (const Expected& e : table) {
@@ -388,5 +394,7 @@ TEST(NavVariantDefinitions, EachVariantFileSelectsItsRuleAndKeepsTheOthersAtBase
         EXPECT_EQ(att.tuning().model, e.model);
         EXPECT_EQ(pos.tuning().horizontal, e.hor);
         EXPECT_EQ(pos.tuning().vertical, e.ver);
+        EXPECT_EQ(att.tuning().formulation, e.form);
+        EXPECT_EQ(pos.tuning().frozen_wind_average_s, e.frozen_wind_average_s);
     }
 }
