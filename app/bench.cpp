@@ -59,10 +59,15 @@ int run_bench(const BenchArgs& a, const CliContext& ctx) {
     fig.scenario = a.scenario;
     fig.steps = a.steps;
     fig.dt_s = 0.01;
-    for (const auto& layout : a.layouts) {
+    std::vector<std::string> layouts = a.layouts;
+    if (!a.security.empty()) layouts.push_back("composed+security");
+    for (const auto& name : layouts) {
+        const bool secure = name == "composed+security";
+        const std::string layout = secure ? "composed" : name;
         RunOverrides o;
         o.steps = a.steps;
-        o.out_dir = (base / layout).string();
+        o.out_dir = (base / name).string();
+        if (secure) o.security = a.security;
         RunConfig rc = RunConfig::load(resolve_scenario(a.scenario), o);
         fig.dt_s = rc.info.dt_s;
         double sps = 0.0;
@@ -74,13 +79,13 @@ int run_bench(const BenchArgs& a, const CliContext& ctx) {
             lo.layout = layout;
             lo.log_level = "warn";
             if (launch_run(rc, reg, lo) != 0) {
-                spdlog::error("bench: layout {} failed", layout);
+                spdlog::error("bench: layout {} failed", name);
                 return 1;
             }
             const YAML::Node s = YAML::LoadFile((fs::path(rc.out_dir) / "clock_summary.yaml").string());
             sps = s["steps_per_s"].as<double>();
         }
-        fig.layouts.push_back({layout, sps, sps * fig.dt_s});
+        fig.layouts.push_back({name, sps, sps * fig.dt_s});
     }
     // Cost of each component's step, measured in the direct layout (no transport): the executor reads the steady
     // clock around each component's step (two clock reads, ~40 ns, per component and step).
@@ -103,8 +108,8 @@ int run_bench(const BenchArgs& a, const CliContext& ctx) {
 
     std::printf("\nscenario %s, %llu steps of %.3f s\n", a.scenario.c_str(), static_cast<unsigned long long>(a.steps),
                 fig.dt_s);
-    std::printf("%-12s %14s %16s\n", "layout", "steps/s", "x real time");
-    for (const auto& r : fig.layouts) std::printf("%-12s %14.0f %16.1f\n", r.layout.c_str(), r.steps_per_s, r.x_real_time);
+    std::printf("%-18s %14s %16s\n", "layout", "steps/s", "x real time");
+    for (const auto& r : fig.layouts) std::printf("%-18s %14.0f %16.1f\n", r.layout.c_str(), r.steps_per_s, r.x_real_time);
     std::printf("\n%-22s %14s\n", "component", "us per step");
     for (const auto& [n, us] : fig.component_us) std::printf("%-22s %14.2f\n", n.c_str(), us);
     if (!fig.montecarlo.empty()) {

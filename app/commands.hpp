@@ -16,6 +16,8 @@ CLI::App* add_report_command(CLI::App& app, CliContext& ctx, CommandRunner& run)
 CLI::App* add_import_log_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
 CLI::App* add_export_log_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
 CLI::App* add_fault_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
+CLI::App* add_pki_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
+CLI::App* add_host_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
 
 // What `gdnav validate --scenario S` does, callable in-process (tests/integration/config_fuzz_test.cpp): loads the
 // scenario (name in config/scenarios or YAML file), constructs and configures every component (each reads and checks

@@ -15,6 +15,7 @@
 #include "runtime/lockstep.hpp"
 #include "runtime/messages.hpp"
 #include "runtime/run_config.hpp"
+#include "runtime/security/security.hpp"
 #include "runtime/topic_types.hpp"
 
 namespace gdnav::app {
@@ -32,6 +33,7 @@ struct FaultArgs {
     std::uint64_t steps{0};
     double p{0.0};
     double timeout_s{10.0};
+    std::string security;  // DDS Security directory: the request is sent as identity `operator`
 };
 
 // The request's `faults:` entry as flow YAML (the clock validates it like a scenario's entry).
@@ -62,7 +64,8 @@ std::string entry_yaml(const FaultArgs& a, const CLI::App& sub) {
 
 int send_fault(const FaultArgs& a, const std::string& entry) {
     runtime::register_gdnav_topics();
-    runtime::DdsContext dds(a.domain, runtime::config_dir() / "dds/gdnav_profiles.xml", "gdnav.fault");
+    runtime::DdsContext dds(a.domain, runtime::config_dir() / "dds/gdnav_profiles.xml", "gdnav.fault", a.security,
+                            runtime::security::kOperatorIdentity);
     DataWriter* w = dds.writer(topics::kFaultRequest, runtime::message_ops<msg::FaultRequest>(),
                                runtime::kControlWriterProfile);
     DataReader* r = dds.reader(topics::kStatus, runtime::message_ops<msg::ComponentStatus>(),
@@ -122,6 +125,7 @@ CLI::App* add_fault_command(CLI::App& app, CliContext& ctx, CommandRunner& run) 
     sub->add_option("--field", a->fields, "bias/noise: NAME=VALUE (e.g. h_m=5, v_n_mps=[1,0,0]); nan: NAME");
     sub->add_option("--steps", a->steps, "delay: steps late")->check(CLI::Range(1, 1000));
     sub->add_option("--p", a->p, "loss: probability of dropping each sample")->check(CLI::Range(0.0, 1.0));
+    sub->add_option("--security", a->security, "DDS Security directory of a secure run (identity 'operator')");
     sub->add_option("--timeout", a->timeout_s, "seconds to wait for the clock's answer")->check(CLI::Range(0.1, 3600.0));
     run = [a, sub, &ctx]() {
         setup_logging("gdnav", ctx.log_level);

@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include "bench.hpp"
+#include "commands_plan.hpp"
 #include "commands_scenario.hpp"
 #include "run_rewrites.hpp"
 #include "runtime/clock.hpp"
@@ -33,6 +34,8 @@ CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
         std::vector<std::string> external;
         double join_timeout_s{0.0};
         std::string faults_file;
+        std::string security;
+        std::string plan;
         RunRewrites rw;
         scenario::Overrides o;
     };
@@ -59,13 +62,30 @@ CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
         ->check(CLI::Range(1.0, 86400.0));
     sub->add_option("--faults", a->faults_file,
                     "apply the fault list of this file instead of the scenario's (e.g. a run's <out>/faults.yaml)");
-    sub->add_option("--record", a->rw.record, "record these topics (TOPIC[,TOPIC...] or all) to <out>/record")
+    sub->add_option("--security", a->security,
+                    "DDS Security directory made by `gdnav pki init` (run.security; docs/deployment.md)");
+    sub->add_option("--plan", a->plan, "deployment plan: run the clock host's slice (docs/deployment.md)")
+        ->check(CLI::ExistingFile);
+    sub->add_option("--record", a->rw.record, "record these topics (TOPIC[,TOPIC...]; default = the five sensor topics; or all) to <out>/record/run.mcap")
         ->delimiter(',');
     sub->add_option("--replay", a->rw.replay_dir, "replay topics recorded in this run directory (docs/replay.md)");
     sub->add_option("--topics", a->rw.replay_topics, "topics to replay with --replay (TOPIC[,TOPIC...])")
         ->delimiter(',');
     run = [a, sub, &ctx]() {
         setup_logging("gdnav", ctx.log_level);
+        if (!a->plan.empty()) {
+            for (const char* opt : {"--scenario", "--seed", "--run", "--layout", "--domain", "--replay", "--external",
+                                    "--security", "--set", "--grade", "--variant", "--faults", "--realtime"})
+                if (sub->count(opt))
+                    throw config::ConfigError(std::string("config error: --plan and ") + opt +
+                                              ": the plan names the scenario, seed, domain and layout of each host");
+            PlanHostArgs pa;
+            pa.plan = a->plan;
+            pa.out = a->out;
+            pa.steps = a->steps;
+            pa.rw.record = a->rw.record;
+            return run_plan_host(pa, ctx);
+        }
         RunOverrides o;
         if (sub->count("--seed")) o.seed = a->seed;
         if (sub->count("--run")) o.run_index = a->run_index;
@@ -76,6 +96,7 @@ CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
         if (!a->external.empty()) o.external = a->external;
         if (sub->count("--join-timeout")) o.join_timeout_s = a->join_timeout_s;
         if (!a->faults_file.empty()) o.faults_file = a->faults_file;
+        if (!a->security.empty()) o.security = a->security;
         // With --replay and no --scenario, the replayed run's own configuration is the base.
         const bool replay_base = !a->rw.replay_dir.empty() && !sub->count("--scenario");
         RunConfig rc = [&] {
@@ -191,6 +212,8 @@ CLI::App* add_bench_command(CLI::App& app, CliContext& ctx, CommandRunner& run) 
     sub->add_option("--mc-steps", a->mc_steps, "steps of each of those runs (default: full length)");
     sub->add_option("--mc-jobs", a->mc_jobs, "runs in parallel in that measurement")->check(CLI::Range(1, 256));
     sub->add_option("--json", a->json, "also write the figures to this JSON file");
+    sub->add_option("--security", a->security,
+                    "DDS Security directory (gdnav pki init): also measure the composed layout with security on");
     run = [a, &ctx]() {
         setup_logging("gdnav", ctx.log_level);
         return run_bench(*a, ctx);

@@ -64,22 +64,24 @@ void export_log(const ExportOptions& o) {
     const fs::path record_dir = o.run_dir / "record";
     std::error_code ec;
     if (!fs::is_directory(record_dir, ec)) fail(o.run_dir.string(), "no record/ directory (record the run with --record)");
+    recorder::Recording recording;
+    try {
+        recording = recorder::read_recording(record_dir);  // every channel: a foreign one is refused
+    } catch (const std::runtime_error& e) {
+        fail("export-log", e.what());
+    }
     fs::create_directories(o.csv_dir);
 
     std::vector<double> imu_align, mag_align;
     int written = 0;
     for (const LogGroup& g : log_groups()) {
-        if (!fs::exists(record_dir / recorder::record_file_name(g.topic), ec)) {
+        auto found = recording.topics.find(g.topic);
+        if (found == recording.topics.end()) {
             spdlog::info("export-log: no record of {}: no {}.csv", g.topic, g.name);
             continue;
         }
-        std::unique_ptr<RecordSamples> rec;
-        try {
-            rec = std::make_unique<RecordSamples>(recorder::read_topic_record(record_dir, g.topic));
-        } catch (const std::runtime_error& e) {
-            fail("export-log", e.what());
-        }
-        if (rec->size() == 0) fail((record_dir / recorder::record_file_name(g.topic)).string(), "no samples");
+        auto rec = std::make_unique<RecordSamples>(std::move(found->second));
+        if (rec->size() == 0) fail(recording.file.string() + ": " + g.topic, "no samples");
         // The grid step from the stamps of the first and last samples.
         const double t_first = g.t_s(rec->load(0));
         double dt_s = 0.01;

@@ -10,7 +10,7 @@
 #include "config/config.hpp"
 #include "csv_table.hpp"
 #include "log_layout.hpp"
-#include "record_file.hpp"
+#include "recording_writer.hpp"
 #include "runtime/topic_types.hpp"
 
 namespace gdnav::app {
@@ -21,6 +21,12 @@ namespace {
 
 [[noreturn]] void fail(const std::string& where, const std::string& what) {
     throw config::ConfigError("config error: " + where + ": " + what);
+}
+
+std::string fmt_exact(double v) {
+    char b[48];
+    std::snprintf(b, sizeof(b), "%.17g", v);
+    return b;
 }
 
 std::string fmt_t(double t) {
@@ -63,62 +69,66 @@ void check_times(const LoadedGroup& g, double max_gap_s) {
     }
 }
 
-// Writes a continuous group: linear interpolation of every column at each grid instant.
-void write_continuous(const LoadedGroup& g, const ImportOptions& o, std::uint64_t steps, Sample& s,
-                      recorder::RecordWriter& w) {
-    const CsvTable& t = g.table;
-    const auto& fields = g.group->fields;
-    std::size_t i = 0;
-    for (std::uint64_t k = 0; k < steps; ++k) {
+// Fills a continuous group's sample for grid step k (called for k = 0, 1, ...): linear interpolation of every column
+// at the grid instant.
+class ContinuousCursor {
+public:
+    explicit ContinuousCursor(const LoadedGroup& g) : g_(g) {}
+    void fill(std::uint64_t k, const ImportOptions& o, Sample& s) {
+        const CsvTable& t = g_.table;
+        const auto& fields = g_.group->fields;
         const double tk = o.t0_s + static_cast<double>(k) * o.dt_s;
-        while (i + 1 < t.rows() && t.at(i + 1, 0) <= tk) ++i;
-        const double* a = t.row(i);
-        if (std::abs(tk - a[0]) <= kSnapS || i + 1 == t.rows()) {
+        while (i_ + 1 < t.rows() && t.at(i_ + 1, 0) <= tk) ++i_;
+        const double* a = t.row(i_);
+        if (std::abs(tk - a[0]) <= kSnapS || i_ + 1 == t.rows()) {
             for (std::size_t c = 0; c < fields.size(); ++c) fields[c].ref(s.p) = a[c + 1];
-        } else if (i + 1 < t.rows() && std::abs(t.at(i + 1, 0) - tk) <= kSnapS) {
-            const double* b = t.row(i + 1);
+        } else if (i_ + 1 < t.rows() && std::abs(t.at(i_ + 1, 0) - tk) <= kSnapS) {
+            const double* b = t.row(i_ + 1);
             for (std::size_t c = 0; c < fields.size(); ++c) fields[c].ref(s.p) = b[c + 1];
         } else {
-            const double* b = t.row(i + 1);
+            const double* b = t.row(i_ + 1);
             const double u = (tk - a[0]) / (b[0] - a[0]);
             for (std::size_t c = 0; c < fields.size(); ++c) fields[c].ref(s.p) = a[c + 1] + u * (b[c + 1] - a[c + 1]);
         }
-        s.ops->set_stamp(s.p, 0, k, tk);
-        w.append(k, s.p);
     }
-}
 
-// Writes GNSS: each fix at its nearest step; other steps hold the last fix with fix_valid false.
-std::uint64_t write_fixes(const LoadedGroup& g, const ImportOptions& o, std::uint64_t steps, Sample& s,
-                          recorder::RecordWriter& w) {
-    const CsvTable& t = g.table;
-    const auto& fields = g.group->fields;
-    std::vector<std::int64_t> fix_row(steps, -1);
-    std::uint64_t placed = 0;
-    for (std::size_t r = 0; r < t.rows(); ++r) {
-        const double x = (t.at(r, 0) - o.t0_s) / o.dt_s;
-        if (x < -0.5 || x >= static_cast<double>(steps) - 0.5) continue;  // outside the grid
-        const auto k = static_cast<std::uint64_t>(std::llround(x));
-        if (fix_row[k] >= 0)
-            fail(t.file + ":" + std::to_string(t.lines[r]),
-                 "column 't_s': second fix on grid step " + std::to_string(k) + " (line " +
-                     std::to_string(t.lines[static_cast<std::size_t>(fix_row[k])]) + "): fixes closer than dt");
-        fix_row[k] = static_cast<std::int64_t>(r);
-        ++placed;
-    }
-    for (std::uint64_t k = 0; k < steps; ++k) {
-        const double tk = o.t0_s + static_cast<double>(k) * o.dt_s;
-        const bool fix = fix_row[k] >= 0;
-        if (fix) {
-            const double* a = t.row(static_cast<std::size_t>(fix_row[k]));
-            for (std::size_t c = 0; c < fields.size(); ++c) fields[c].ref(s.p) = a[c + 1];
+private:
+    const LoadedGroup& g_;
+    std::size_t i_{0};
+};
+
+// GNSS: each fix at its nearest step; other steps hold the last fix with fix_valid false.
+class FixCursor {
+public:
+    FixCursor(const LoadedGroup& g, const ImportOptions& o, std::uint64_t steps) : g_(g), fix_row_(steps, -1) {
+        const CsvTable& t = g.table;
+        for (std::size_t r = 0; r < t.rows(); ++r) {
+            const double x = (t.at(r, 0) - o.t0_s) / o.dt_s;
+            if (x < -0.5 || x >= static_cast<double>(steps) - 0.5) continue;  // outside the grid
+            const auto k = static_cast<std::uint64_t>(std::llround(x));
+            if (fix_row_[k] >= 0)
+                fail(t.file + ":" + std::to_string(t.lines[r]),
+                     "column 't_s': second fix on grid step " + std::to_string(k) + " (line " +
+                         std::to_string(t.lines[static_cast<std::size_t>(fix_row_[k])]) + "): fixes closer than dt");
+            fix_row_[k] = static_cast<std::int64_t>(r);
+            ++placed_;
         }
-        g.group->fix_valid(s.p) = fix;
-        s.ops->set_stamp(s.p, 0, k, tk);
-        w.append(k, s.p);
     }
-    return placed;
-}
+    void fill(std::uint64_t k, Sample& s) {
+        const bool fix = fix_row_[k] >= 0;
+        if (fix) {
+            const double* a = g_.table.row(static_cast<std::size_t>(fix_row_[k]));
+            for (std::size_t c = 0; c < g_.group->fields.size(); ++c) g_.group->fields[c].ref(s.p) = a[c + 1];
+        }
+        g_.group->fix_valid(s.p) = fix;
+    }
+    [[nodiscard]] std::uint64_t placed() const { return placed_; }
+
+private:
+    const LoadedGroup& g_;
+    std::vector<std::int64_t> fix_row_;
+    std::uint64_t placed_{0};
+};
 
 }  // namespace
 
@@ -181,42 +191,67 @@ void import_log(const ImportOptions& o) {
                      align_file.string());
     }
 
+    // One recording, the groups interleaved step by step (log-time order, as the recorder writes).
     const fs::path record_dir = o.run_dir / "record";
-    fs::create_directories(record_dir);
-    std::vector<std::unique_ptr<recorder::RecordWriter>> writers;
+    std::vector<std::string> topics;
+    for (const auto& g : loaded) topics.push_back(g.group->topic);
+    struct Track {
+        const LoadedGroup* g;
+        std::unique_ptr<Sample> s;
+        std::optional<ContinuousCursor> continuous;
+        std::optional<FixCursor> fixes;
+    };
+    std::vector<Track> tracks;
     for (const auto& g : loaded) {
-        const runtime::MessageOps* ops = runtime::find_topic(g.group->topic);
-        Sample s(*ops);
+        Track tr{&g, std::make_unique<Sample>(*runtime::find_topic(g.group->topic)), {}, {}};
         if (align && g.group->name == "imu")
-            for (std::size_t c = 0; c < al.imu.size(); ++c) al.imu[c].ref(s.p) = align->at(0, c);
+            for (std::size_t c = 0; c < al.imu.size(); ++c) al.imu[c].ref(tr.s->p) = align->at(0, c);
         if (align && g.group->name == "mag")
-            for (std::size_t c = 0; c < al.mag.size(); ++c) al.mag[c].ref(s.p) = align->at(0, al.imu.size() + c);
-        writers.push_back(std::make_unique<recorder::RecordWriter>(record_dir, g.group->topic));
-        try {
-            if (g.group->fixes) {
-                const std::uint64_t placed = write_fixes(g, o, steps, s, *writers.back());
-                spdlog::info("import-log: {}: {} rows, {} fixes on the grid -> {}", g.table.file, g.table.rows(), placed,
-                             g.group->topic);
-            } else {
-                write_continuous(g, o, steps, s, *writers.back());
-                spdlog::info("import-log: {}: {} rows -> {}", g.table.file, g.table.rows(), g.group->topic);
-            }
-            writers.back()->close();
-        } catch (const std::runtime_error& e) {
-            if (dynamic_cast<const config::ConfigError*>(&e)) throw;
-            fail(record_dir.string(), e.what());
-        }
+            for (std::size_t c = 0; c < al.mag.size(); ++c) al.mag[c].ref(tr.s->p) = align->at(0, al.imu.size() + c);
+        if (g.group->fixes) tr.fixes.emplace(g, o, steps);
+        else tr.continuous.emplace(g);
+        tracks.push_back(std::move(tr));
     }
-    std::vector<const recorder::RecordWriter*> ws;
-    for (const auto& w : writers) ws.push_back(w.get());
-    recorder::write_digest_file(record_dir, ws, true);
+    recorder::RecordingOptions ro;
+    ro.t0_s = o.t0_s;
+    ro.dt_s = o.dt_s;
+    ro.run_metadata = {{"source", "gdnav import-log " + fs::absolute(o.csv_dir).string()},
+                       {"t0_s", fmt_exact(o.t0_s)},
+                       {"dt_s", fmt_exact(o.dt_s)},
+                       {"steps", std::to_string(steps)},
+                       {"step_ns", std::to_string(recorder::step_ns(o.dt_s))},
+                       {"log_time_epoch", "t0_s: log_time = publish_time = step * step_ns ns; t_s = t0_s + step * dt_s"}};
+    try {
+        recorder::RecordingWriter w(record_dir, topics, ro);
+        for (std::uint64_t k = 0; k < steps; ++k) {
+            const double tk = o.t0_s + static_cast<double>(k) * o.dt_s;
+            for (std::size_t i = 0; i < tracks.size(); ++i) {
+                Track& tr = tracks[i];
+                if (tr.fixes) tr.fixes->fill(k, *tr.s);
+                else tr.continuous->fill(k, o, *tr.s);
+                tr.s->ops->set_stamp(tr.s->p, 0, k, tk);
+                w.append(i, k, tr.s->p);
+            }
+        }
+        w.close(true);
+    } catch (const std::runtime_error& e) {
+        if (dynamic_cast<const config::ConfigError*>(&e)) throw;
+        fail(record_dir.string(), e.what());
+    }
+    for (const auto& tr : tracks) {
+        if (tr.fixes)
+            spdlog::info("import-log: {}: {} rows, {} fixes on the grid -> {}", tr.g->table.file, tr.g->table.rows(),
+                         tr.fixes->placed(), tr.g->group->topic);
+        else
+            spdlog::info("import-log: {}: {} rows -> {}", tr.g->table.file, tr.g->table.rows(), tr.g->group->topic);
+    }
     std::ofstream info(o.run_dir / "import.yaml");
     char grid[160];
     std::snprintf(grid, sizeof(grid), "t0_s: %.17g\ndt_s: %.17g\nsteps: %llu\n", o.t0_s, o.dt_s,
                   static_cast<unsigned long long>(steps));
     info << "# written by gdnav import-log (docs/replay.md)\nsource: \"" << fs::absolute(o.csv_dir).string() << "\"\n"
          << grid << "alignment: " << (align ? "true" : "false") << "\ntopics: [";
-    for (std::size_t i = 0; i < ws.size(); ++i) info << (i ? ", " : "") << ws[i]->topic();
+    for (std::size_t i = 0; i < topics.size(); ++i) info << (i ? ", " : "") << topics[i];
     info << "]\n";
     spdlog::info("import-log: {} steps of {} s from t0 = {} s (t = {} .. {} s) written to {}", steps, o.dt_s, o.t0_s,
                  fmt_t(o.t0_s), fmt_t(o.t0_s + static_cast<double>(steps - 1) * o.dt_s), record_dir.string());

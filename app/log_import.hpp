@@ -1,6 +1,6 @@
 #pragma once
 // `gdnav import-log`: a flight log in the CSV layout (log_layout.hpp) resampled onto the lockstep grid
-// t_k = t0 + k dt and written as recorder files (<run_dir>/record/<topic>.cdr + digest.yaml), ready for
+// t_k = t0 + k dt and written as a recording (<run_dir>/record/run.mcap + digest.yaml, replacing one there), ready for
 // `gdnav run --replay <run_dir>`. Resampling rule (docs/replay.md):
 //   * imu, mag, air, atm (continuous signals): linear interpolation between the two samples around t_k; a sample
 //     within kSnapS of t_k is taken as it is. The grid must lie inside every file's time span (no extrapolation)

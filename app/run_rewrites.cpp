@@ -31,13 +31,24 @@ std::string join(const std::vector<std::string>& v) {
     return s;
 }
 
-// Full topic names, in the given order without repeats; "all" (alone) = every known data topic.
+// The topics of `--record default`: the five sensor topics, i.e. a flight log (what `gdnav run --replay` needs to run
+// the filters, and what export-log/import-log carry). Truth, the estimates, guidance and control are added by name.
+const std::vector<std::string> kDefaultRecorded{"gdnav/ImuSample", "gdnav/MagSample", "gdnav/AirSample",
+                                                "gdnav/AtmSample", "gdnav/GnssSample"};
+
+// Full topic names, in the given order without repeats; "all" (alone) = every known data topic; "default" (with
+// others or alone) = kDefaultRecorded.
 std::vector<std::string> resolve_topics(const std::vector<std::string>& names, const std::string& option,
                                         bool allow_all) {
     if (allow_all && names.size() == 1 && names.front() == "all") return runtime::known_topics();
     std::vector<std::string> out;
     for (const auto& n : names) {
         if (n == "all") fail(option, allow_all ? "'all' must be given alone" : "'all' is not allowed here");
+        if (n == "default" && allow_all) {
+            for (const auto& t : kDefaultRecorded)
+                if (std::find(out.begin(), out.end(), t) == out.end()) out.push_back(t);
+            continue;
+        }
         const std::string t = recorder::resolve_topic(n);
         if (t.empty()) fail(option, "unknown topic '" + n + "' (known: " + recorder::known_topics_list() + ")");
         if (std::find(out.begin(), out.end(), t) == out.end()) out.push_back(t);
@@ -52,13 +63,6 @@ YAML::Node sequence(const std::vector<std::string>& v) {
     return s;
 }
 
-// Topics that have a record file in `record_dir` (for messages).
-std::vector<std::string> recorded_topics(const fs::path& record_dir) {
-    std::vector<std::string> v;
-    for (const auto& t : runtime::known_topics())
-        if (fs::exists(record_dir / recorder::record_file_name(t))) v.push_back(t);
-    return v;
-}
 
 void add_recorder(YAML::Node comps, const std::vector<std::string>& names) {
     const std::vector<std::string> topics = resolve_topics(names, "--record", true);
@@ -84,10 +88,16 @@ void add_replay(YAML::Node root, const RunConfig& rc, const RunRewrites& rw, con
     const fs::path run_dir = fs::absolute(rw.replay_dir);
     const fs::path record_dir = run_dir / "record";
     if (!fs::is_directory(run_dir, ec)) fail("--replay", "'" + rw.replay_dir + "' is not a directory");
+    std::vector<std::string> recorded;
+    try {
+        recorded = recorder::recorded_topics(record_dir);
+    } catch (const std::runtime_error& e) {
+        fail("--replay", e.what());
+    }
     for (const auto& t : topics)
-        if (!fs::exists(record_dir / recorder::record_file_name(t), ec))
-            fail("--replay", (record_dir / recorder::record_file_name(t)).string() + ": missing: no record of " + t +
-                                 " (recorded there: " + join(recorded_topics(record_dir)) + ")");
+        if (std::find(recorded.begin(), recorded.end(), t) == recorded.end())
+            fail("--replay", recorder::recording_file(record_dir).string() + ": no record of " + t + " (recorded there: " +
+                                 (recorded.empty() ? std::string("nothing") : join(recorded)) + ")");
     if (fs::weakly_canonical(fs::absolute(rc.out_dir), ec) == fs::weakly_canonical(run_dir, ec))
         fail("--out", "the output directory is the replayed run directory " + run_dir.string() +
                           " (its records would be overwritten): give another --out");

@@ -16,6 +16,17 @@ function(gdnav_idl_library target)
       COMMENT "fastddsgen ${base}.idl"
       VERBATIM)
     list(APPEND sources ${outdir}/${base}.cxx ${outdir}/${base}PubSubTypes.cxx)
+    # The IDL text itself, for self-describing recordings (MCAP schemas, omgidl): std::string_view
+    # gdnav::idl_text::<base>() in <base>IdlText.cxx, regenerated when the IDL changes (configure-time dependency).
+    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${abs})
+    file(READ ${abs} _hex HEX)
+    string(REGEX REPLACE "([0-9a-f][0-9a-f])" "0x\\1," _hex "${_hex}")
+    file(WRITE ${outdir}/${base}IdlText.cxx.tmp
+      "// Generated from ${abs} by cmake/GdnavIdl.cmake: the IDL text (a byte array: no string-length limit).\n"
+      "#include <string_view>\nnamespace gdnav::idl_text {\nnamespace { const unsigned char kText[] = {${_hex}}; }\n"
+      "std::string_view ${base}() { return {reinterpret_cast<const char*>(kText), sizeof(kText)}; }\n}\n")
+    configure_file(${outdir}/${base}IdlText.cxx.tmp ${outdir}/${base}IdlText.cxx COPYONLY)
+    list(APPEND sources ${outdir}/${base}IdlText.cxx)
   endforeach()
   add_library(${target} STATIC ${sources})
   target_include_directories(${target} SYSTEM PUBLIC $<BUILD_INTERFACE:${outdir}> $<INSTALL_INTERFACE:include/gdnav>)

@@ -18,11 +18,16 @@ packages=(
   libfastrtps-dev libfastcdr-dev fastddsgen fastdds-tools
   cyclonedds-dev cyclonedds-tools
   libeigen3-dev libyaml-cpp-dev libspdlog-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
-  libcli11-dev libgeographiclib-dev libhdf5-dev
+  libcli11-dev libgeographiclib-dev libhdf5-dev libzstd-dev
   libopenmpi-dev openmpi-bin
   python3 python3-numpy python3-matplotlib python3-h5py python3-dev pybind11-dev
-  iproute2 procps
+  libssl-dev openssl
+  iproute2 procps nftables
+  nodejs
 )
+# npm: the MCAP test reads recordings with the official TypeScript reader (tests/integration/mcap_node). NodeSource's
+# nodejs package brings its own npm (Debian's npm would conflict with it).
+command -v npm > /dev/null 2>&1 || packages+=(npm)
 
 if [ "${GDNAV_SKIP_APT:-0}" != 1 ]; then
   sudo=""

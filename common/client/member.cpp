@@ -112,6 +112,7 @@ int Member::run() {
     if (!std::filesystem::is_regular_file(rc.dds_profile))
         throw std::invalid_argument("DDS profile " + rc.dds_profile.string() +
                                     ": no such file (set --dds-profile or GDNAV_CONFIG_DIR)");
+    if (!opt_.security.empty()) rc.security_dir = std::filesystem::absolute(opt_.security);
     spdlog::info("member '{}' joining DDS domain {}, run id {}{} ({} inputs, {} outputs)", opt_.name, opt_.domain_id,
                  opt_.run_id, opt_.free_running ? ", free-running" : "", inputs_.size(), outputs_.size());
     std::vector<std::unique_ptr<runtime::Component>> members;

@@ -27,7 +27,8 @@ T parse_number(const std::string& flag, const std::string& text, T lo, T hi) {
 
 std::string Options::usage(const std::string& program) {
     return "usage: " + program +
-           " [--name NAME] [--domain D] [--run I] [--free-running] [--dds-profile FILE] [--startup-timeout S] "
+           " [--name NAME] [--domain D] [--run I] [--free-running] [--dds-profile FILE] [--security DIR] "
+           "[--startup-timeout S] "
            "[--log-level trace|debug|info|warn|error]";
 }
 
@@ -54,6 +55,8 @@ Options Options::from_args(int argc, const char* const* argv, std::string defaul
             o.free_running = true;
         } else if (a == "--dds-profile") {
             o.dds_profile = value();
+        } else if (a == "--security") {
+            o.security = value();
         } else if (a == "--startup-timeout") {
             o.startup_timeout_s = parse_number<double>(a, value(), 1.0, 86400.0);
         } else if (a == "--log-level") {

@@ -12,6 +12,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "runtime/dds_context.hpp"
+#include "runtime/security/security.hpp"
 #include "runtime/graph.hpp"
 #include "runtime/lockstep.hpp"
 #include "runtime/messages.hpp"
@@ -87,7 +88,8 @@ struct Clock::Impl {
             m.expected = true;
             members[n] = m;
         }
-        dds = std::make_unique<DdsContext>(rc.domain_id, rc.dds_profile, "gdnav.clock");
+        dds = std::make_unique<DdsContext>(rc.domain_id, rc.dds_profile, "gdnav.clock", rc.security_dir,
+                                           security::kClockIdentity);
         tick_writer = dds->writer(topics::kTick, message_ops<msg::Tick>(), kControlWriterProfile);
         control_writer = dds->writer(topics::kRunControl, message_ops<msg::RunControl>(), kLatchedWriterProfile);
         status_writer = dds->writer(topics::kStatus, message_ops<msg::ComponentStatus>(), kControlWriterProfile);

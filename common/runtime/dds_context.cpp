@@ -1,17 +1,28 @@
 #include "runtime/dds_context.hpp"
 
+#include <cstdlib>
 #include <stdexcept>
 
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/dds/log/Log.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
 #include <spdlog/spdlog.h>
+
+#include "runtime/security/security.hpp"
 
 namespace gdnav::runtime {
 
 using namespace eprosima::fastdds::dds;
 
-DdsContext::DdsContext(int domain_id, const std::filesystem::path& profile_file, const std::string& name) {
+DdsContext::DdsContext(int domain_id, const std::filesystem::path& profile_file, const std::string& name,
+                       const std::filesystem::path& security_dir, const std::string& identity) {
     auto* factory = DomainParticipantFactory::get_instance();
+    // GDNAV_FASTDDS_LOG=warning|info: Fast DDS's own log at that verbosity (default: errors only).
+    if (const char* v = std::getenv("GDNAV_FASTDDS_LOG")) {
+        const std::string lv = v;
+        if (lv == "warning") Log::SetVerbosity(Log::Kind::Warning);
+        if (lv == "info") Log::SetVerbosity(Log::Kind::Info);
+    }
     if (!std::filesystem::exists(profile_file))
         throw std::runtime_error("DDS profile file not found: " + profile_file.string());
     if (factory->load_XML_profiles_file(profile_file.string()) != ReturnCode_t::RETCODE_OK)
@@ -21,8 +32,16 @@ DdsContext::DdsContext(int domain_id, const std::filesystem::path& profile_file,
         throw std::runtime_error("DDS profile file " + profile_file.string() + " has no participant profile '" +
                                  kParticipantProfile + "'");
     pq.name(name);
+    if (!security_dir.empty()) {
+        security::check_identity(security_dir, identity);
+        security::apply(pq, security_dir, identity);
+    }
     participant_ = factory->create_participant(static_cast<DomainId_t>(domain_id), pq);
-    if (!participant_) throw std::runtime_error("cannot create DDS participant on domain " + std::to_string(domain_id));
+    if (!participant_)
+        throw std::runtime_error("cannot create DDS participant on domain " + std::to_string(domain_id) +
+                                 (security_dir.empty() ? std::string()
+                                                       : " with security identity '" + identity + "' from " +
+                                                             security_dir.string() + " (see the Fast DDS log above)"));
     publisher_ = participant_->create_publisher(PUBLISHER_QOS_DEFAULT);
     subscriber_ = participant_->create_subscriber(SUBSCRIBER_QOS_DEFAULT);
     if (!publisher_ || !subscriber_) throw std::runtime_error("cannot create DDS publisher/subscriber");

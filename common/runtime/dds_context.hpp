@@ -1,7 +1,8 @@
 #pragma once
 // One DDS participant per process, created from the XML profiles in config/dds/ (loaded explicitly: Fast DDS 2.9
 // silently ignores FASTRTPS_DEFAULT_PROFILES_FILE unless profiles are loaded before the default QoS is read).
-// Topics and types are registered once; entities are deleted in the destructor so shared memory is released.
+// With a security directory the participant authenticates and encrypts (DDS Security). Topics and types are
+// registered once; entities are deleted in the destructor so shared memory is released.
 #include <filesystem>
 #include <map>
 #include <string>
@@ -28,7 +29,9 @@ inline constexpr const char* kLatchedReaderProfile = "gdnav_latched_reader";
 
 class DdsContext {
 public:
-    DdsContext(int domain_id, const std::filesystem::path& profile_file, const std::string& name);
+    // security_dir empty: a plain participant; else DDS Security on with `identity` (runtime/security/security.hpp).
+    DdsContext(int domain_id, const std::filesystem::path& profile_file, const std::string& name,
+               const std::filesystem::path& security_dir = {}, const std::string& identity = {});
     ~DdsContext();
     DdsContext(const DdsContext&) = delete;
     DdsContext& operator=(const DdsContext&) = delete;

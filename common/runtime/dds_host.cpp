@@ -12,6 +12,7 @@
 #include <spdlog/spdlog.h>
 
 #include "runtime/dds_context.hpp"
+#include "runtime/security/security.hpp"
 #include "runtime/faults/input_faults.hpp"
 #include "runtime/graph.hpp"
 #include "runtime/host_inbox.hpp"
@@ -103,8 +104,13 @@ struct DdsHost::Impl {
         for (auto& c : owned) raw.push_back(c.get());
         const Graph g = build_graph(raw);  // local step order (zero-lag edges inside this process)
         std::string pname = "gdnav";
-        for (auto* c : g.order) pname += "." + c->name();
-        dds = std::make_unique<DdsContext>(rc.domain_id, rc.dds_profile, pname);
+        std::vector<std::string> hosted;
+        for (auto* c : g.order) {
+            pname += "." + c->name();
+            hosted.push_back(c->name());
+        }
+        dds = std::make_unique<DdsContext>(rc.domain_id, rc.dds_profile, pname, rc.security_dir,
+                                           security::process_identity(hosted));
         tick_reader = dds->reader(topics::kTick, message_ops<msg::Tick>(), kControlReaderProfile);
         control_reader = dds->reader(topics::kRunControl, message_ops<msg::RunControl>(), kLatchedReaderProfile);
         status_reader = dds->reader(topics::kStatus, message_ops<msg::ComponentStatus>(), kControlReaderProfile);

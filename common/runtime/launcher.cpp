@@ -17,6 +17,7 @@
 #include "runtime/direct_executor.hpp"
 #include "runtime/lockstep.hpp"
 #include "runtime/process_signals.hpp"
+#include "runtime/security/security.hpp"
 #include "runtime/shm_cleanup.hpp"
 
 namespace gdnav::runtime {
@@ -177,7 +178,30 @@ int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& 
     }
     spdlog::info("run {} seed {} layout {}: {} steps of {} s -> {}", rc.info.run_index, rc.info.seed, opt.layout,
                  rc.info.steps, rc.info.dt_s, rc.out_dir);
-    if (opt.layout == "direct") return run_direct(rc, reg, true);
+    if (opt.layout == "direct") {
+        if (!rc.security_dir.empty())
+            spdlog::warn("run.security is ignored in the direct layout (one process, no DDS)");
+        return run_direct(rc, reg, true);
+    }
+    if (!rc.security_dir.empty() && opt.layout == "distributed")
+        throw config::ConfigError(
+            "config error: " + rc.origin + ": key 'run.security': not with --layout distributed: Fast DDS 2.9.1 "
+            "(Debian 12) leaves some secure endpoints unmatched when more than about 3 participants start together "
+            "(measured in docs/deployment.md); use --layout composed (the clock and one process)");
+    if (!rc.security_dir.empty()) {
+        // Every identity this run starts must be valid before any process starts (one clear error otherwise).
+        std::vector<std::string> identities{security::kClockIdentity};
+        std::vector<std::string> hosted;
+        for (const auto& m : rc.members)
+            if (!rc.is_external(m.name)) {
+                if (opt.layout == "distributed") identities.push_back(m.name);
+                hosted.push_back(m.name);
+            }
+        if (opt.layout == "composed" && !hosted.empty()) identities.push_back(security::process_identity(hosted));
+        for (const auto& id : identities) security::check_identity(rc.security_dir, id);
+        spdlog::info("DDS Security on: {} identities from {} checked (authentication, access control, AES-GCM)",
+                     identities.size(), rc.security_dir.string());
+    }
 
     const fs::path exe = opt.exe.empty() ? fs::read_symlink("/proc/self/exe") : opt.exe;
     const std::time_t started = std::time(nullptr) - 1;
@@ -188,14 +212,29 @@ int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& 
         return a;
     };
     install_stop_signal_handlers();
-    children.push_back({kClockName, spawn(exe, args({"clock"}))});
+    std::vector<Child> services;
+    for (const auto& [name, argv] : opt.services) {
+        std::vector<std::string> rest(argv.begin() + 1, argv.end());
+        services.push_back({name, spawn(argv.front(), rest)});
+        spdlog::info("started {} (pid {}): {}", name, services.back().pid, [&] {
+            std::string c;
+            for (const auto& a : argv) c += (c.empty() ? "" : " ") + a;
+            return c;
+        }());
+    }
+    // The members this process starts: all (not external), or this host's slice of a plan.
+    auto here = [&](const std::string& name) {
+        if (rc.is_external(name)) return false;
+        return !opt.slice || std::find(opt.only.begin(), opt.only.end(), name) != opt.only.end();
+    };
+    if (opt.start_clock) children.push_back({kClockName, spawn(exe, args({"clock"}))});
     if (opt.layout == "distributed") {
         for (const auto& m : rc.members)
-            if (!rc.is_external(m.name)) children.push_back({m.name, spawn(exe, args({"component", m.name}))});
+            if (here(m.name)) children.push_back({m.name, spawn(exe, args({"component", m.name}))});
     } else {
         std::string all;
         for (const auto& m : rc.members)
-            if (!rc.is_external(m.name)) all += (all.empty() ? "" : ",") + m.name;
+            if (here(m.name)) all += (all.empty() ? "" : ",") + m.name;
         if (!all.empty()) children.push_back({"composed", spawn(exe, args({"component", all}))});
     }
     if (!rc.external.empty()) {
@@ -240,11 +279,26 @@ int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& 
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     reap(children, on_exit);
+    if (!services.empty()) {
+        signal_all(services, SIGTERM);
+        if (!wait_all(services, 3.0, [](Child&) {})) signal_all(services, SIGKILL);
+        reap(services, [](Child&) {});
+    }
     const auto removed = clean_fastdds_shm(started);
     if (!removed.empty()) spdlog::info("removed {} Fast DDS shared-memory files left by the run", removed.size());
     if (interrupted) {
         spdlog::error("run interrupted");
         return kExitInterrupted;
+    }
+    if (!opt.start_clock) {  // a plan host without the clock: its own processes decide
+        if (!failures.empty()) {
+            std::string s;
+            for (const auto& f : failures) s += (s.empty() ? "" : ", ") + f;
+            spdlog::error("host slice failed: {}", s);
+            return 1;
+        }
+        spdlog::info("host slice completed; results in {}", rc.out_dir);
+        return kExitOk;
     }
     if (clock_code != kExitOk) {
         spdlog::error("run failed: the clock ended with code {}{}", clock_code,

@@ -8,6 +8,8 @@
 // the Fast DDS shared-memory files its processes left behind.
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "runtime/registry.hpp"
 #include "runtime/run_config.hpp"
@@ -18,6 +20,13 @@ struct LaunchOptions {
     std::string layout{"distributed"};  // direct | composed | distributed
     std::filesystem::path exe;          // program to start for members (default: /proc/self/exe)
     std::string log_level{"info"};
+    // One host's slice of a deployment plan (runtime/deploy/plan.hpp): start only these members (the others run on
+    // other hosts) and the clock only when start_clock. Empty `only` = every member that is not external.
+    std::vector<std::string> only;
+    bool slice{false};
+    bool start_clock{true};
+    // Services started before the run and stopped after it (e.g. a Fast DDS discovery server): name, argv.
+    std::vector<std::pair<std::string, std::vector<std::string>>> services;
 };
 
 // Returns the exit code of the run (0 = completed).

@@ -73,6 +73,11 @@ RunConfig RunConfig::parse(const std::string& text, const std::string& origin, c
         for (const auto& n : *o.external) root["run"]["external"].push_back(n);
     }
     if (o.join_timeout_s) root["run"]["join_timeout_s"] = *o.join_timeout_s;
+    if (o.security) root["run"]["security"] = o.security->string();
+    // Made absolute here so the run.yaml that the launcher writes for its children names the same directory.
+    if (root["run"]["security"] && root["run"]["security"].IsScalar())
+        root["run"]["security"] =
+            std::filesystem::absolute(root["run"]["security"].as<std::string>()).lexically_normal().string();
     if (o.faults_file) {
         // A run's <out>/faults.yaml (or any file with a `faults:` list): the schedule to apply instead.
         const Config f = Config::load(*o.faults_file);
@@ -129,6 +134,12 @@ RunConfig RunConfig::parse(const std::string& text, const std::string& origin, c
     rc.join_timeout_s = run.get_double("join_timeout_s", 60.0, Range{1.0, 86400.0});
     rc.dds_profile = run.get_string("dds_profile", "dds/gdnav_profiles.xml");
     if (rc.dds_profile.is_relative()) rc.dds_profile = config_dir() / rc.dds_profile;
+    if (run.has("security")) {
+        rc.security_dir = run.get_string("security");
+        if (!std::filesystem::is_directory(rc.security_dir))
+            run.fail("security", "'" + rc.security_dir.string() +
+                                     "' is not a directory (make one with `gdnav pki init DIR --scenario S`)");
+    }
     rc.out_dir = run.get_string("out_dir", "out/run");
     rc.info.out_dir = rc.out_dir;
     run.finish();

@@ -19,6 +19,8 @@
 //     join_timeout_s: 60       # wall-clock wait for external members before step 0
 //     domain_id: 0             # DDS domain (the launcher picks a free one when absent)
 //     dds_profile: dds/gdnav_profiles.xml   # relative to the config directory
+//     security: pki/             # DDS Security directory (gdnav pki init; relative to the working directory);
+//                                # absent = no security (runtime/security/security.hpp, docs/deployment.md)
 //     out_dir: out/run
 //   components:
 //     plant: {type: chain_plant, ...component parameters...}
@@ -53,6 +55,7 @@ struct RunOverrides {
     std::optional<std::vector<std::string>> external;
     std::optional<double> join_timeout_s;
     std::optional<std::filesystem::path> faults_file;  // replaces the `faults:` list (gdnav run --faults)
+    std::optional<std::filesystem::path> security;     // run.security (gdnav run --security DIR)
 };
 
 struct MemberSpec {
@@ -93,6 +96,8 @@ public:
     // Barrier members the clock waits for: configured components and external members, in that order.
     [[nodiscard]] std::vector<std::string> member_names() const;
     std::filesystem::path dds_profile;
+    // DDS Security directory (absolute; empty = security off). Every participant of the run uses it.
+    std::filesystem::path security_dir;
     std::string out_dir;
     std::vector<MemberSpec> members;  // in file order
     faults::FaultSchedule faults;     // top-level `faults:` list (docs/faults.md)

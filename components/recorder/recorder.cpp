@@ -1,9 +1,12 @@
 #include "recorder.hpp"
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include <spdlog/spdlog.h>
 
+#include "run_metadata.hpp"
 #include "runtime/registry.hpp"
 #include "runtime/topic_types.hpp"
 
@@ -13,6 +16,7 @@ namespace gdnav::recorder {
 void Recorder::configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream&) {
     const auto topics = cfg.get_strings("topics");
     decimation_ = static_cast<std::uint64_t>(cfg.get_int("decimation", 1, 1, 100000));
+    chunk_bytes_ = static_cast<std::size_t>(cfg.get_int("chunk_kib", 1024, 1, 65536)) * 1024;
     if (topics.empty()) cfg.fail("topics", "at least one topic is required");
     for (const auto& t : topics) {
         const runtime::MessageOps* ops = runtime::find_topic(t);
@@ -26,18 +30,32 @@ void Recorder::configure(const config::Config& cfg, const runtime::RunInfo& run,
         tracks_.push_back(std::move(tr));
     }
     dir_ = run.out_dir.empty() ? std::string() : (std::filesystem::path(run.out_dir) / "record").string();
+    run_ = run;
 }
 
-void Recorder::open_files() {
-    for (auto& tr : tracks_)
-        if (!tr->writer) tr->writer = std::make_unique<RecordWriter>(dir_, tr->input->topic());
+void Recorder::open_file() {
+    if (writer_) return;
+    RecordingOptions o;
+    o.t0_s = run_.t0_s;
+    o.dt_s = run_.dt_s;
+    o.chunk_bytes = chunk_bytes_;
+    if (std::ifstream f(std::filesystem::path(run_.out_dir) / "run.yaml"); f) {
+        std::ostringstream text;
+        text << f.rdbuf();
+        o.run_yaml = text.str();
+    }
+    o.run_metadata = run_metadata(run_, o.run_yaml);
+    std::vector<std::string> topics;
+    for (const auto& tr : tracks_) topics.push_back(tr->input->topic());
+    writer_ = std::make_unique<RecordingWriter>(dir_, topics, std::move(o));
 }
 
 void Recorder::step(const runtime::StepContext& ctx) {
     if (dir_.empty()) return;
-    if (!tracks_.empty() && !tracks_.front()->writer) open_files();
+    open_file();
     if (ctx.k % decimation_ != 0) return;
-    for (auto& tr : tracks_) {
+    for (std::size_t i = 0; i < tracks_.size(); ++i) {
+        Track* tr = tracks_[i].get();
         if (!tr->input->available()) {
             if (tr->input->lost() && !tr->lost_reported) {
                 tr->lost_reported = true;
@@ -45,27 +63,23 @@ void Recorder::step(const runtime::StepContext& ctx) {
             }
             continue;
         }
-        tr->writer->append(ctx.k, tr->input->data_ptr());
+        writer_->append(i, ctx.k, tr->input->data_ptr());
     }
 }
 
 void Recorder::finish(bool completed) {
     if (finished_ || dir_.empty()) return;
     finished_ = true;
-    open_files();  // a run that ended before its first step still gets (empty) files and a digest
-    std::vector<const RecordWriter*> writers;
+    open_file();  // a run that ended before its first step still gets an (empty) recording and a digest
     std::map<std::string, std::uint64_t> lost_at;
-    for (auto& tr : tracks_) {
-        tr->writer->close();
-        writers.push_back(tr->writer.get());
+    for (auto& tr : tracks_)
         if (tr->lost_reported) lost_at[tr->input->topic()] = tr->lost_at;
-    }
-    write_digest_file(dir_, writers, completed, lost_at);
+    writer_->close(completed, lost_at);
     spdlog::debug("recorder: wrote {}", dir_);
 }
 
 void register_recorder(runtime::ComponentRegistry& reg) {
-    reg.add("recorder", "records topics to <out>/record (CDR per topic + digest.yaml)",
+    reg.add("recorder", "records topics to <out>/record (run.mcap: indexed MCAP, CDR + omgidl; digest.yaml)",
             [](const std::string& n) { return std::make_unique<Recorder>(n); });
 }
 

@@ -1,17 +1,21 @@
 #pragma once
-// recorder: subscribes to a configured list of topics and writes, per topic, every sample in lockstep order.
+// recorder: subscribes to a configured list of topics and writes every sample in lockstep order.
 //
-// Files in <out_dir>/record/:
-//   <topic>.cdr   — one record per step: u64 step (little endian), u32 n, n bytes of the sample's CDR encoding
-//                   (padding zeroed, so identical samples give identical bytes). '/' in topic names becomes '__'.
-//   digest.yaml   — per topic: samples, last_step, FNV-1a 64 digest of all its records; `complete: true` only when
+//   recorder: {type: recorder, topics: [gdnav/ImuSample, ...], decimation: 1, chunk_kib: 1024}
+//
+// Files in <out_dir>/record/ (record_file.hpp):
+//   run.mcap      — one indexed MCAP file, a channel per topic (CDR messages, omgidl schemas), one message per
+//                   recorded step, zstd chunks of `chunk_kib` KiB of records written as they fill (a killed run keeps
+//                   every chunk written before), run metadata and the run.yaml attachment; summary and index at the
+//                   end of a normal run.
+//   digest.yaml   — per topic: samples, last_step, FNV-1a 64 digest of all its samples; `complete: true` only when
 //                   the run finished normally. Two runs are bit-identical iff their digests are equal.
 // Inputs whose producer dies are recorded up to the last step they delivered (`lost_at_step` in the digest).
 #include <cstdint>
 #include <memory>
 #include <vector>
 
-#include "record_file.hpp"
+#include "recording_writer.hpp"
 #include "runtime/component.hpp"
 #include "runtime/registry.hpp"
 
@@ -27,14 +31,16 @@ public:
 private:
     struct Track {
         std::unique_ptr<runtime::InputBase> input;
-        std::unique_ptr<RecordWriter> writer;  // opened at the first step (record_file.hpp: the file format)
         bool lost_reported{false};
         std::uint64_t lost_at{0};
     };
-    void open_files();
+    void open_file();
     std::vector<std::unique_ptr<Track>> tracks_;
+    std::unique_ptr<RecordingWriter> writer_;  // opened at the first step (run.yaml is written by then)
+    runtime::RunInfo run_;
     std::string dir_;
     std::uint64_t decimation_{1};
+    std::size_t chunk_bytes_{1u << 20};
     bool finished_{false};
 };
 

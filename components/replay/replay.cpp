@@ -15,7 +15,7 @@ using recorder::digest_hex;
 using recorder::DigestFile;
 using recorder::known_topics_list;
 using recorder::read_digest_file;
-using recorder::read_topic_record;
+using recorder::read_recording;
 using recorder::RecordEntry;
 using recorder::resolve_topic;
 
@@ -67,18 +67,24 @@ void Replay::configure(const config::Config& cfg, const runtime::RunInfo& run, r
     if (digest.present && !digest.complete)
         spdlog::debug("replay: {}/digest.yaml says the recording did not end normally", dir.string());
     std::set<std::string> seen;
+    std::vector<std::string> topics;
     for (const auto& name : names) {
         const std::string topic = resolve_topic(name);
         if (topic.empty()) cfg.fail("topics", "unknown topic '" + name + "' (known: " + known_topics_list() + ")");
         if (!seen.insert(topic).second) cfg.fail("topics", "topic '" + topic + "' is listed twice");
+        topics.push_back(topic);
+    }
+    recorder::Recording recording;
+    try {
+        recording = read_recording(dir, topics);
+    } catch (const std::runtime_error& e) {
+        cfg.fail("record", e.what());
+    }
+    for (const auto& topic : topics) {
         auto tr = std::make_unique<Track>();
-        try {
-            tr->record = read_topic_record(dir, topic);
-        } catch (const std::runtime_error& e) {
-            cfg.fail("record", e.what());
-        }
+        tr->record = std::move(recording.topics.at(topic));
         const TopicRecord& r = tr->record;
-        const std::string file = r.file.string();
+        const std::string file = r.file.string() + ": " + r.topic;
         if (auto it = digest.digests.find(topic); it != digest.digests.end() && it->second != digest_hex(r.digest))
             cfg.fail("record", file + ": content (digest " + digest_hex(r.digest) + ") differs from digest.yaml (" +
                                    it->second + "): the file was changed or truncated");
@@ -138,7 +144,7 @@ void Replay::step(const runtime::StepContext& ctx) {
 }
 
 void register_replay(runtime::ComponentRegistry& reg) {
-    reg.add("replay", "publishes recorded topics (<record>/<topic>.cdr) at their recorded steps (docs/replay.md)",
+    reg.add("replay", "publishes recorded topics (<record>/run.mcap) at their recorded steps (docs/replay.md)",
             runtime::make_factory<Replay>());
 }
 

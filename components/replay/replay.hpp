@@ -4,10 +4,11 @@
 //
 //   replay: {type: replay, record: out/run1/record, topics: [gdnav/ImuSample, MagSample, ...]}
 //
-// Configure reads every <record>/<topic>.cdr fully (the runtime recorder's format, record_file.hpp) and checks it:
-// the file exists and is well formed, matches its digest in <record>/digest.yaml when listed there, starts at step
-// 0, reaches the run's last step, and its samples are stamped with this run's time grid (t0_s + k dt_s). One
-// ConfigError naming the file and the key otherwise.
+// Configure reads <record>/run.mcap fully (the runtime recorder's MCAP recording, record_file.hpp) and checks it:
+// every channel is a gdnav topic (an MCAP of another tool is refused, naming the channel), each replayed topic has
+// a channel whose messages are well formed, match their digest in <record>/digest.yaml when listed there, start at
+// step 0, reach the run's last step, and are stamped with this run's time grid (t0_s + k dt_s). One ConfigError
+// naming the file and the key otherwise. A file cut short (run killed) is read up to the cut, with a warning.
 //
 // Step k publishes the sample recorded for step k. A step without a record (a recorder with decimation, or gaps in
 // an imported log) publishes the latest recorded sample before it again (zero-order hold, restamped by the executor

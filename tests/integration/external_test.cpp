@@ -118,6 +118,38 @@ TEST(External, ExternalControlJoinsTheComposedLayout) {
     EXPECT_EQ(read_digests(out), read_digests(ref)) << p.run_log;
 }
 
+// Issue 12 item 5 with an external member: a secure composed run (DDS Security, docs/deployment.md) with the
+// installed package's control member joining under its own certificate gives the plain run's outputs; the same
+// member without a certificate is never matched, so the run ends at the join timeout naming it.
+TEST(External, ExternalControlJoinsASecureRunOnlyWithItsCertificate) {
+    const auto ref = temp_dir("ext-ref-s");
+    const Result r0 = run({GDNAV_GDNAV_EXE, "run", "--scenario", "paper2", "--seed", "2", "--layout", "direct",
+                           "--steps", "2000", "--record", kRecorded, "--out", ref.string()},
+                          60.0);
+    ASSERT_EQ(r0.exit_code, 0) << r0.output;
+    const fs::path pki = temp_dir("ext-pki") / "pki";
+    const Result init = run({GDNAV_GDNAV_EXE, "pki", "init", pki.string(), "--scenario", "paper2"}, 60.0);
+    ASSERT_EQ(init.exit_code, 0) << init.output;
+
+    const auto out = temp_dir("ext-secure");
+    const Pair p = run_with_external({"run", "--scenario", "paper2", "--seed", "2", "--layout", "composed", "--steps",
+                                      "2000", "--record", kRecorded, "--external", "control", "--security",
+                                      pki.string()},
+                                     {example("gdnav-example-control"), "--security", pki.string()}, out, 120.0);
+    ASSERT_EQ(p.run_code, 0) << p.run_log << "\n--- member:\n" << p.member_log;
+    EXPECT_EQ(p.member_code, 0) << p.member_log;
+    EXPECT_EQ(read_digests(out), read_digests(ref)) << p.run_log;
+
+    const auto out2 = temp_dir("ext-uncertified");
+    const Pair q = run_with_external({"run", "--scenario", "paper2", "--seed", "2", "--layout", "composed", "--steps",
+                                      "2000", "--external", "control", "--join-timeout", "8", "--security",
+                                      pki.string()},
+                                     {example("gdnav-example-control"), "--startup-timeout", "10"}, out2, 60.0);
+    EXPECT_NE(q.run_code, 0) << q.run_log;
+    EXPECT_NE(q.run_log.find("control"), std::string::npos) << q.run_log;
+    EXPECT_NE(q.member_code, 0) << q.member_log;
+}
+
 TEST(External, RealTimeHardwareInTheLoopWithAFreeRunningController) {
     // 60 s of scenario #2 (t = -50 ... 10 s) paced to wall time; the external controller is free-running: the
     // physics uses the newest command it has (zero-order hold) and records how late each one was.

@@ -12,8 +12,10 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "mcap/mcap_writer.hpp"
 #include "process_util.hpp"
 #include "record_reader.hpp"
+#include "recording_writer.hpp"
 
 using namespace gdnav::testing;
 namespace fs = std::filesystem;
@@ -84,6 +86,50 @@ void expect_config_error(const Result& r, const std::vector<std::string>& needle
     std::printf("  %s\n", error.c_str());
 }
 
+// Adds `topic` of the recording in `from` to the recording in `to` (rewritten: same grid, same samples).
+void add_topic(const fs::path& from, const std::string& topic, const fs::path& to) {
+    gdnav::runtime::register_gdnav_topics();
+    gdnav::recorder::Recording a = gdnav::recorder::read_recording(to);
+    const gdnav::recorder::TopicRecord extra = gdnav::recorder::read_topic_record(from, topic);
+    a.topics[topic] = extra;
+    std::vector<std::string> topics;
+    for (const auto& [t, _] : a.topics) topics.push_back(t);
+    gdnav::recorder::RecordingOptions o;
+    o.t0_s = std::stod(a.run_metadata.at("t0_s"));
+    o.dt_s = std::stod(a.run_metadata.at("dt_s"));
+    o.run_metadata = a.run_metadata;
+    gdnav::recorder::RecordingWriter w(to, topics, o);
+    for (std::size_t i = 0; i < topics.size(); ++i) {
+        const auto& r = a.topics.at(topics[i]);
+        gdnav::recorder::SampleDecoder dec(*r.ops);
+        std::unique_ptr<void, void (*)(void*)> s(r.ops->create(), r.ops->destroy);
+        for (const auto& e : r.entries) {
+            ASSERT_TRUE(dec.decode(&r.bytes[e.offset], e.size, s.get()));
+            w.append(i, e.step, s.get());
+        }
+    }
+    w.close(true);
+}
+
+// An MCAP file as another tool writes it: gdnav's ImuSample channel (copied from `from`) and a camera channel.
+void write_foreign_mcap(const fs::path& from, const fs::path& to) {
+    gdnav::runtime::register_gdnav_topics();
+    const gdnav::recorder::TopicRecord imu = gdnav::recorder::read_topic_record(from, "gdnav/ImuSample");
+    fs::create_directories(to);
+    gdnav::mcap::Writer w(to / "run.mcap", {"ros2", "another tool", "zstd", 3, 1u << 20});
+    const auto s_imu = w.add_schema("gdnav::msg::ImuSample", "omgidl", std::string(gdnav::runtime::topic_schema_idl("gdnav/ImuSample")));
+    const auto c_imu = w.add_channel(s_imu, "gdnav/ImuSample", "cdr");
+    const auto s_cam = w.add_schema("sensor_msgs/msg/Image", "ros2msg", "std_msgs/Header header\nuint32 height\n");
+    const auto c_cam = w.add_channel(s_cam, "/camera/image", "cdr");
+    const std::uint8_t image[8] = {0, 1, 0, 0, 0, 0, 0, 0};
+    for (const auto& e : imu.entries) {
+        w.write_message(c_imu, static_cast<std::uint32_t>(e.step), e.step * 10000000, e.step * 10000000,
+                        &imu.bytes[e.offset], e.size);
+        w.write_message(c_cam, static_cast<std::uint32_t>(e.step), e.step * 10000000, e.step * 10000000, image, 8);
+    }
+    w.close();
+}
+
 }  // namespace
 
 TEST(Replay, RecordedSensorsIntoTheBuiltInFiltersGiveBitIdenticalEstimates) {
@@ -151,7 +197,7 @@ TEST(Replay, ExportedLogAtMixedRatesImportedAndReplayedStaysWithinTheRunsFigures
     EXPECT_EQ(di.at("gdnav/GnssSample"), d0.at("gdnav/GnssSample"));
     EXPECT_NE(di.at("gdnav/MagSample"), d0.at("gdnav/MagSample"));  // interpolated between the 50 Hz samples
     // The imported log has no truth; the original's is the reference the nav_recorder scores against.
-    fs::copy_file(orig / "record" / "gdnav__Truth.cdr", imp / "record" / "gdnav__Truth.cdr");
+    add_topic(orig / "record", "gdnav/Truth", imp / "record");
 
     r = run({kExe, "run", "--scenario", "paper2", "--seed", "1", "--steps", kSteps, "--replay", imp.string(),
              "--topics", kSensors + ",Truth", "--layout", "direct", "--out", rep.string()},
@@ -192,17 +238,23 @@ TEST(Replay, BadInputsGiveOneClearErrorAndExitCode2) {
     expect_config_error(with({"--record", "ImuSample,Bogus"}), {"--record", "unknown topic 'Bogus'", "gdnav/ImuSample"});
     std::printf("missing record:\n");
     expect_config_error(with({"--steps", "300", "--replay", orig.string(), "--topics", "MagSample"}),
-                        {"gdnav__MagSample.cdr", "no record of gdnav/MagSample", "recorded there: gdnav/ImuSample"});
+                        {"run.mcap", "no record of gdnav/MagSample", "recorded there: gdnav/ImuSample"});
     std::printf("record too short:\n");
     expect_config_error(with({"--steps", "400", "--replay", orig.string(), "--topics", "ImuSample"}),
-                        {"gdnav__ImuSample.cdr", "last sample at step 299", "--steps 300"});
-    std::printf("truncated record:\n");
+                        {"run.mcap", "last sample at step 299", "--steps 300"});
+    std::printf("truncated recording (cut inside its only chunk: no sample left):\n");
     const fs::path trunc = temp_dir("bad-trunc");
     fs::create_directories(trunc / "record");
-    fs::copy_file(orig / "record" / "gdnav__ImuSample.cdr", trunc / "record" / "gdnav__ImuSample.cdr");
-    fs::resize_file(trunc / "record" / "gdnav__ImuSample.cdr", fs::file_size(trunc / "record" / "gdnav__ImuSample.cdr") - 5);
+    const fs::path cut = trunc / "record" / "run.mcap";
+    fs::copy_file(orig / "record" / "run.mcap", cut);
+    fs::resize_file(cut, fs::file_size(cut) / 2);
     expect_config_error(with({"--steps", "300", "--replay", trunc.string(), "--topics", "ImuSample"}),
-                        {"components.replay.record", "gdnav__ImuSample.cdr", "record 299", "truncated sample"});
+                        {"components.replay.record", "run.mcap", "gdnav/ImuSample: no samples"});
+    std::printf("an MCAP file of another tool:\n");
+    const fs::path foreign = temp_dir("bad-foreign");
+    write_foreign_mcap(orig / "record", foreign / "record");
+    expect_config_error(with({"--steps", "300", "--replay", foreign.string(), "--topics", "ImuSample"}),
+                        {"--replay", "run.mcap", "channel '/camera/image' (id 1) is not a gdnav topic"});
     std::printf("replay into its own directory:\n");
     expect_config_error(run({kExe, "run", "--replay", orig.string(), "--topics", "ImuSample"}), {"--out"});
 

@@ -9,50 +9,15 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "netns.hpp"
 #include "process_util.hpp"
 
 using namespace gdnav::testing;
 namespace fs = std::filesystem;
 
-namespace {
-
-class Namespaces {
-public:
-    Namespaces() : a_("gdnav-a-" + std::to_string(getpid())), b_("gdnav-b-" + std::to_string(getpid())) {
-        const std::string va = "gdv" + std::to_string(getpid() % 100000) + "a";
-        const std::string vb = "gdv" + std::to_string(getpid() % 100000) + "b";
-        ok_ = sh({"ip", "netns", "add", a_}) && sh({"ip", "netns", "add", b_}) &&
-              sh({"ip", "link", "add", va, "type", "veth", "peer", "name", vb}) &&
-              sh({"ip", "link", "set", va, "netns", a_}) && sh({"ip", "link", "set", vb, "netns", b_}) &&
-              sh({"ip", "-n", a_, "addr", "add", "10.231.0.1/24", "dev", va}) &&
-              sh({"ip", "-n", b_, "addr", "add", "10.231.0.2/24", "dev", vb}) &&
-              sh({"ip", "-n", a_, "link", "set", va, "up"}) && sh({"ip", "-n", b_, "link", "set", vb, "up"}) &&
-              sh({"ip", "-n", a_, "link", "set", "lo", "up"}) && sh({"ip", "-n", b_, "link", "set", "lo", "up"});
-    }
-    ~Namespaces() {
-        sh({"ip", "netns", "del", a_});
-        sh({"ip", "netns", "del", b_});
-    }
-    [[nodiscard]] bool ok() const { return ok_; }
-    [[nodiscard]] const std::string& a() const { return a_; }
-    [[nodiscard]] const std::string& b() const { return b_; }
-
-private:
-    static bool sh(const std::vector<std::string>& argv) {
-        std::vector<std::string> full{"/usr/bin/env"};
-        full.insert(full.end(), argv.begin(), argv.end());
-        return run(full, 10.0).exit_code == 0;
-    }
-    std::string a_, b_;
-    bool ok_{false};
-};
-
-bool have_netns_rights() { return fs::exists("/usr/bin/ip") || fs::exists("/sbin/ip"); }
-
-}  // namespace
 
 TEST(TwoHosts, SplitRunRecordsTheSameOutputsAsOneHost) {
-    if (geteuid() != 0 || !have_netns_rights()) GTEST_SKIP() << "needs root and iproute2 for network namespaces";
+    if (!can_make_namespaces()) GTEST_SKIP() << "needs root and iproute2 for network namespaces";
     Namespaces ns;
     if (!ns.ok()) GTEST_SKIP() << "cannot create network namespaces here";
 

@@ -27,8 +27,9 @@ constexpr const char* kDoc = R"doc(gdnav_client: join a gdnav run as a lockstep 
     sys.exit(m.run())
 
 The run must have been started with `gdnav run ... --external NAME --domain D`. Member(name, domain=0, run=0,
-free_running=False, dds_profile="", startup_timeout_s=120.0, log_level="info"); Member.from_args(argv, default_name)
-reads --name, --domain, --run, --free-running, --dds-profile, --startup-timeout, --log-level and leaves arguments
+free_running=False, dds_profile="", startup_timeout_s=120.0, log_level="info", security=""); Member.from_args(argv,
+default_name) reads --name, --domain, --run, --free-running, --dds-profile, --security, --startup-timeout, --log-level
+and leaves arguments
 starting with --x- in Member.extra_args.
 
 Ports (declare them before run(); topics "gdnav/<Type>" of idl/gdnav.idl, nested fields as "stamp.t_s"):
@@ -75,7 +76,7 @@ PYBIND11_MODULE(gdnav_client, mod) {
 
     py::class_<PyMember>(mod, "Member", "a lockstep member of a gdnav run (see the module docstring)")
         .def(py::init([](std::string name, int domain, std::uint64_t run, bool free_running, std::string dds_profile,
-                         double startup_timeout_s, std::string log_level) {
+                         double startup_timeout_s, std::string log_level, std::string security) {
                  Options o;
                  o.name = std::move(name);
                  o.domain_id = domain;
@@ -84,10 +85,12 @@ PYBIND11_MODULE(gdnav_client, mod) {
                  o.dds_profile = dds_profile;
                  o.startup_timeout_s = startup_timeout_s;
                  o.log_level = std::move(log_level);
+                 o.security = security;
                  return std::make_unique<PyMember>(std::move(o));
              }),
              py::arg("name"), py::arg("domain") = 0, py::arg("run") = 0, py::arg("free_running") = false,
-             py::arg("dds_profile") = "", py::arg("startup_timeout_s") = 120.0, py::arg("log_level") = "info")
+             py::arg("dds_profile") = "", py::arg("startup_timeout_s") = 120.0, py::arg("log_level") = "info",
+             py::arg("security") = "")
         .def_static("from_args", &PyMember::from_args, py::arg("argv"), py::arg("default_name"))
         .def("input", &PyMember::input, py::arg("topic"), py::arg("lag") = Lag::Same, py::keep_alive<0, 1>())
         .def("output", &PyMember::output, py::arg("topic"), py::keep_alive<0, 1>())

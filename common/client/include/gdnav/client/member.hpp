@@ -46,6 +46,7 @@ struct Options {
     std::uint64_t run_id{0};             // run index of the run (gdnav run --run I; 0 by default)
     bool free_running{false};            // not in the barrier; inputs are the newest samples (HIL)
     std::filesystem::path dds_profile;   // Fast DDS XML; empty = <config dir>/dds/gdnav_profiles.xml
+    std::filesystem::path security;      // DDS Security directory (gdnav pki init --member NAME=...); identity = name
     double startup_timeout_s{120.0};     // wait this long for the clock's member table, then exit 5
     std::string log_level{"info"};
 

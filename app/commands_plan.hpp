@@ -1,0 +1,21 @@
+#pragma once
+// One host's slice of a deployment plan: `gdnav host --plan P --name H` and `gdnav run --plan P` (the clock's host).
+#include <cstdint>
+#include <string>
+
+#include "command.hpp"
+#include "run_rewrites.hpp"
+
+namespace gdnav::app {
+
+struct PlanHostArgs {
+    std::string plan;
+    std::string host;  // empty: the host with the clock
+    std::string out;
+    std::uint64_t steps{0};
+    RunRewrites rw;    // --record only
+};
+
+int run_plan_host(const PlanHostArgs& a, const CliContext& ctx);
+
+}  // namespace gdnav::app

@@ -1,0 +1,41 @@
+#pragma once
+// DDS Security for a run (docs/deployment.md, "Security"): Fast DDS's built-in plugins, PKI-DH authentication,
+// Access-Permissions access control and AES-GCM-GMAC crypto, configured from a directory made by `gdnav pki init`:
+//
+//   DIR/ca.pem, DIR/ca.key              the run's certificate authority (identity and permissions CA)
+//   DIR/governance.xml, governance.p7s  the domain rules, signed by the CA (S/MIME)
+//   DIR/permissions.xml, permissions.p7s  one grant per identity, signed by the CA
+//   DIR/identities/NAME.pem, NAME.key   one certificate (subject /CN=NAME/O=gdnav) and key per identity
+//
+// An identity is a process's DDS participant: `clock`, a member hosted alone (its member name), `composed` (the
+// process hosting several members) or `operator` (gdnav fault and monitoring tools).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace eprosima::fastdds::dds {
+class DomainParticipantQos;
+}
+
+namespace gdnav::runtime::security {
+
+inline constexpr const char* kClockIdentity = "clock";
+inline constexpr const char* kComposedIdentity = "composed";
+inline constexpr const char* kOperatorIdentity = "operator";
+inline constexpr const char* kOrganisation = "gdnav";
+
+// The identity of a process hosting these members: the member's name when alone, else `composed`.
+std::string process_identity(const std::vector<std::string>& members);
+// "O=gdnav,CN=NAME": the RFC 2253 form of the certificate subject /CN=NAME/O=gdnav, as a permissions grant names it.
+std::string subject_name(const std::string& identity);
+
+// Checks, before anything starts, that DIR holds a usable identity: the CA, the identity's certificate signed by it
+// and valid now, the key matching the certificate, governance and permissions documents signed by the CA, and a
+// grant for the identity. Throws config::ConfigError with one line naming the file and the problem.
+void check_identity(const std::filesystem::path& dir, const std::string& identity);
+
+// Sets the participant properties that turn the built-in security plugins on for `identity`.
+void apply(eprosima::fastdds::dds::DomainParticipantQos& qos, const std::filesystem::path& dir,
+           const std::string& identity);
+
+}  // namespace gdnav::runtime::security

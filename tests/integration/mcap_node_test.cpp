@@ -1,0 +1,135 @@
+// Issue 16 item 1: a gdnav recording is a standard MCAP file. A scenario-#2 run recorded with every data topic is
+// read by the official TypeScript reader (@mcap/core, indexed and streaming, zstd through @foxglove/wasm-zstd) and
+// every message of every channel is decoded by Foxglove's OMG IDL deserializer from the schema in the file
+// (mcap_node/check_mcap.mjs). The values must equal gdnav's own reader's: every field (field tables of the IDL) of
+// every topic at several steps, message counts, metadata and the run.yaml attachment.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "process_util.hpp"
+#include "record_file.hpp"
+#include "runtime/fields/field_table.hpp"
+#include "runtime/topic_types.hpp"
+
+using namespace gdnav::testing;
+namespace fs = std::filesystem;
+namespace fields = gdnav::runtime::fields;
+
+namespace {
+
+std::string json_string(const std::string& s) {
+    std::string o = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') o += '\\';
+        o += c;
+    }
+    return o + "\"";
+}
+
+// Every field of one decoded sample: "name": {"kind": K, "values": ["..", ...]} (values as exact strings).
+std::string sample_json(const fields::TypeFields& table, void* sample) {
+    std::ostringstream o;
+    o << "{";
+    for (std::size_t i = 0; i < table.count; ++i) {
+        const fields::Field& f = table.fields[i];
+        o << (i ? ", " : "") << json_string(f.name) << ": {\"kind\": ";
+        std::vector<std::string> v;
+        char buf[40];
+        switch (f.kind) {
+            case fields::Kind::F64:
+                o << "\"f64\"";
+                for (std::size_t k = 0; k < f.count; ++k) {
+                    std::snprintf(buf, sizeof(buf), "%.17g", static_cast<double*>(f.ptr(sample))[k]);
+                    v.push_back(buf);
+                }
+                break;
+            case fields::Kind::U64:
+                o << "\"u64\"";
+                for (std::size_t k = 0; k < f.count; ++k)
+                    v.push_back(std::to_string(static_cast<std::uint64_t*>(f.ptr(sample))[k]));
+                break;
+            case fields::Kind::U32:
+                o << "\"u32\"";
+                for (std::size_t k = 0; k < f.count; ++k)
+                    v.push_back(std::to_string(static_cast<std::uint32_t*>(f.ptr(sample))[k]));
+                break;
+            case fields::Kind::U8:
+                o << "\"u8\"";
+                for (std::size_t k = 0; k < f.count; ++k)
+                    v.push_back(std::to_string(static_cast<std::uint8_t*>(f.ptr(sample))[k]));
+                break;
+            case fields::Kind::Bool:
+                o << "\"bool\"";
+                for (std::size_t k = 0; k < f.count; ++k) v.push_back(static_cast<bool*>(f.ptr(sample))[k] ? "true" : "false");
+                break;
+            case fields::Kind::Enum:
+                o << "\"enum\"";
+                v.push_back(std::to_string(*static_cast<std::uint32_t*>(f.ptr(sample))));
+                break;
+            case fields::Kind::String:
+                o << "\"string\"";
+                v.push_back(f.get_str(sample));
+                break;
+        }
+        o << ", \"values\": [";
+        for (std::size_t k = 0; k < v.size(); ++k) o << (k ? ", " : "") << json_string(v[k]);
+        o << "]}";
+    }
+    return o.str() + "}";
+}
+
+}  // namespace
+
+TEST(McapNode, OfficialReaderDecodesEveryMessageLikeGdnavsReader) {
+    gdnav::runtime::register_gdnav_topics();
+    const fs::path out = temp_dir("mcap-node");
+    // Scenario #2, seed 1, 3001 steps (t = -50 .. -20 s), every data topic (1 MiB chunks: 4 of them).
+    const Result r = run({GDNAV_GDNAV_EXE, "run", "--scenario", "paper2", "--seed", "1", "--steps", "3001", "--layout",
+                          "direct", "--record", "all", "--out", out.string()},
+                         120.0);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+
+    // Expected values from gdnav's own reader: every field at steps 0, 1, 997, 1500 and the last.
+    const gdnav::recorder::Recording rec = gdnav::recorder::read_recording(out / "record");
+    ASSERT_TRUE(rec.complete) << rec.problem;
+    ASSERT_EQ(rec.topics.size(), gdnav::runtime::known_topics().size());
+    std::ostringstream json;
+    json << "{\"topics\": {";
+    bool first_topic = true;
+    for (const auto& [topic, tr] : rec.topics) {
+        ASSERT_EQ(tr.entries.size(), 3001u) << topic;
+        const fields::TypeFields* table = fields::find_type_fields(tr.ops->type_name);
+        ASSERT_NE(table, nullptr) << tr.ops->type_name;
+        gdnav::recorder::SampleDecoder dec(*tr.ops);
+        std::unique_ptr<void, void (*)(void*)> s(tr.ops->create(), tr.ops->destroy);
+        json << (first_topic ? "" : ", ") << json_string(topic) << ": {\"type\": " << json_string(tr.ops->type_name)
+             << ", \"count\": " << tr.entries.size() << ", \"samples\": {";
+        first_topic = false;
+        bool first = true;
+        for (std::size_t i : {std::size_t{0}, std::size_t{1}, std::size_t{997}, std::size_t{1500}, tr.entries.size() - 1}) {
+            const auto& e = tr.entries[i];
+            ASSERT_TRUE(dec.decode(&tr.bytes[e.offset], e.size, s.get()));
+            json << (first ? "" : ", ") << "\"" << e.step << "\": " << sample_json(*table, s.get());
+            first = false;
+        }
+        json << "}}";
+    }
+    json << "}, \"metadata\": {\"seed\": \"1\", \"run_index\": \"0\", \"steps\": \"3001\", \"t0_s\": \""
+         << rec.run_metadata.at("t0_s") << "\", \"config_digest\": \"" << rec.run_metadata.at("config_digest")
+         << "\"}, \"run_yaml_bytes\": " << rec.run_yaml.size() << "}\n";
+    EXPECT_EQ(rec.run_metadata.at("t0_s"), "-50");
+    EXPECT_EQ(rec.run_yaml, read_file(out / "run.yaml"));
+    const fs::path expected = out / "expected.json";
+    std::ofstream(expected) << json.str();
+
+    const std::string script = std::string(GDNAV_MCAP_NODE_DIR) + "/check_mcap.mjs";
+    const Result node = run({GDNAV_NODE, script, (out / "record" / "run.mcap").string(), expected.string()}, 120.0);
+    std::printf("%s", node.output.c_str());
+    EXPECT_EQ(node.exit_code, 0) << node.output;
+    EXPECT_NE(node.output.find("PASS"), std::string::npos);
+    if (!::testing::Test::HasFailure()) fs::remove_all(out);
+}
