@@ -339,15 +339,23 @@ std::vector<std::uint8_t> load(const std::filesystem::path& file) {
 
 }  // namespace
 
-ReadResult read_summary(const std::filesystem::path& file) {
+namespace {
+
+// Loads the file and runs the scanner (the whole file, or only footer and summary); a cut or damaged file ends the
+// scan with `complete = false` and the byte it stopped at; anything else throws naming the file.
+ReadResult scan_file(const std::filesystem::path& file, const std::function<void(const MessageView&)>& on_message,
+                     bool summary_only) {
     const std::vector<std::uint8_t> bytes = load(file);
     ReadResult r;
-    const std::function<void(const MessageView&)> none = [](const MessageView&) {};
-    Scanner s(bytes, r, none);
+    Scanner s(bytes, r, on_message);
     try {
-        if (bytes.size() < 8 || std::memcmp(bytes.data(), kMagic, 8) != 0)
-            throw std::runtime_error("not an MCAP file (magic)");
-        s.run_summary();
+        if (summary_only) {
+            if (bytes.size() < 8 || std::memcmp(bytes.data(), kMagic, 8) != 0)
+                throw std::runtime_error("not an MCAP file (magic)");
+            s.run_summary();
+        } else {
+            s.run();
+        }
     } catch (const Bad& b) {
         r.complete = false;
         r.problem = "at byte " + std::to_string(b.at) + " of " + std::to_string(bytes.size()) + ": " + b.what;
@@ -357,19 +365,14 @@ ReadResult read_summary(const std::filesystem::path& file) {
     return r;
 }
 
+}  // namespace
+
+ReadResult read_summary(const std::filesystem::path& file) {
+    return scan_file(file, [](const MessageView&) {}, true);
+}
+
 ReadResult read(const std::filesystem::path& file, const std::function<void(const MessageView&)>& on_message) {
-    const std::vector<std::uint8_t> bytes = load(file);
-    ReadResult r;
-    Scanner s(bytes, r, on_message);
-    try {
-        s.run();
-    } catch (const Bad& b) {
-        r.complete = false;
-        r.problem = "at byte " + std::to_string(b.at) + " of " + std::to_string(bytes.size()) + ": " + b.what;
-    } catch (const std::runtime_error& e) {
-        throw std::runtime_error(file.string() + ": " + e.what());
-    }
-    return r;
+    return scan_file(file, on_message, false);
 }
 
 }  // namespace gdnav::mcap

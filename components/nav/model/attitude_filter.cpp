@@ -140,18 +140,17 @@ AttitudeEstimate AttitudeFilter::step(std::uint64_t k, double t_s, const ImuSamp
     const bool error_state = tun_.formulation == AttitudeFormulation::kErrorState;
     // Propagate.
     // A is zero outside its leading 7x7 block (q rows, q and w_nb columns): Phi = diag(Phi_7, I).
+    // Both covariances use Phi at x+(k-1) (the covariance does not depend on the state update that follows).
     if (error_state) {
         filters::propagate_covariance_leading_diag<eskf::kN, eskf::kJ>(
-            pe_, eskf::transition_leading(x_, tun_.dt_s), qe_diag_);  // Phi at x+(k-1), as the additive filter
-        x_ += tun_.dt_s * att::derivative(x_);
-        normalise_quaternion();
+            pe_, eskf::transition_leading(x_, tun_.dt_s), qe_diag_);
     } else {
         const filters::SqMat<att::kJ> phi = filters::transition_matrix<att::kJ>(
             att::state_jacobian(x_).topLeftCorner<att::kJ, att::kJ>(), tun_.dt_s, tun_.transition_order);
-        x_ += tun_.dt_s * att::derivative(x_);
-        normalise_quaternion();
         filters::propagate_covariance_leading_diag<att::kN, att::kJ>(p_, phi, tun_.q_diag);
     }
+    x_ += tun_.dt_s * att::derivative(x_);
+    normalise_quaternion();
     // Input checks: a rejected previous position estimate is replaced by the last good one.
     bool pos_good = checks::position_estimate_ok(pos_prev);
     if (pos_good) {
