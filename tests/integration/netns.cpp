@@ -1,8 +1,11 @@
 #include "netns.hpp"
 
+#include <signal.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
+#include <tuple>
 
 #include "process_util.hpp"
 
@@ -22,6 +25,7 @@ Namespaces::Namespaces()
 }
 
 Namespaces::~Namespaces() {
+    queue_netem_stop();
     sh({"ip", "netns", "del", a_});
     sh({"ip", "netns", "del", b_});
 }
@@ -51,6 +55,48 @@ bool Namespaces::loss(int percent) {
              ok;
     }
     return ok;
+}
+
+bool Namespaces::queue_netem(double delay_ms, double jitter_ms, double loss_pct, double reorder_pct,
+                             const std::string& log_dir) {
+    const std::string exe = GDNAV_TEST_NETEM_EXE;
+    if (exe.empty() || !std::filesystem::exists(exe)) return false;
+    queue_netem_stop();
+    auto num = [](double v) {
+        char b[32];
+        std::snprintf(b, sizeof(b), "%g", v);
+        return std::string(b);
+    };
+    unsigned seed = 1;
+    for (const auto& [ns, dev, tag] : {std::tuple{a_, va_, "a"}, std::tuple{b_, vb_, "b"}}) {
+        if (!sh({"ip", "netns", "exec", ns, "iptables-legacy", "-t", "mangle", "-A", "OUTPUT", "-o", dev, "-p", "udp",
+                 "-j", "NFQUEUE", "--queue-num", "7", "--queue-bypass"})) {
+            queue_netem_stop();
+            return false;
+        }
+        netem_pids_.push_back(start(in(ns, {exe, "--queue", "7", "--delay-ms", num(delay_ms), "--jitter-ms",
+                                            num(jitter_ms), "--loss-pct", num(loss_pct), "--reorder-pct",
+                                            num(reorder_pct), "--seed", std::to_string(seed++)}),
+                                    std::filesystem::path(log_dir) / (std::string("netem_") + tag + ".log")));
+    }
+    usleep(300000);  // the tools bind their queues (until then --queue-bypass lets packets through)
+    for (int pid : netem_pids_)
+        if (!alive(pid)) {
+            queue_netem_stop();
+            return false;
+        }
+    return true;
+}
+
+void Namespaces::queue_netem_stop() {
+    for (int pid : netem_pids_) {
+        kill(pid, SIGTERM);
+        wait_for(pid, 5.0);
+    }
+    netem_pids_.clear();
+    for (const auto& [ns, dev] : {std::pair{a_, va_}, std::pair{b_, vb_}})
+        sh({"ip", "netns", "exec", ns, "iptables-legacy", "-t", "mangle", "-D", "OUTPUT", "-o", dev, "-p", "udp",
+            "-j", "NFQUEUE", "--queue-num", "7", "--queue-bypass"});  // none: fails, fine
 }
 
 bool Namespaces::link(bool up) {
