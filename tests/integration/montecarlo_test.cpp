@@ -42,24 +42,7 @@ void expect_well_formed_tables(const std::string& md, const std::string& label) 
         EXPECT_NE(md.find(title), std::string::npos) << title << "\n" << md;
     EXPECT_NE(md.find("| " + label + " | mean |"), std::string::npos) << md;
     EXPECT_EQ(md.find("n/a"), std::string::npos) << md;
-    std::istringstream in(md);
-    std::string line;
-    long cells = -1;
-    int tables = 0;
-    while (std::getline(in, line)) {
-        if (line.empty() || line[0] != '|') {
-            cells = -1;
-            continue;
-        }
-        std::string unescaped = std::regex_replace(line, std::regex(R"(\\\|)"), "");
-        const long n = std::count(unescaped.begin(), unescaped.end(), '|');
-        if (cells < 0) {
-            cells = n;
-            ++tables;
-        }
-        EXPECT_EQ(n, cells) << line;
-    }
-    EXPECT_GE(tables, 6);
+    EXPECT_GE(expect_consistent_markdown_tables(md), 6);
 }
 
 void expect_png(const fs::path& p) {

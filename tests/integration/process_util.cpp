@@ -1,12 +1,16 @@
 #include "process_util.hpp"
 
+#include <gtest/gtest.h>
+
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <thread>
 
@@ -131,6 +135,27 @@ PairResult run_pair(const std::vector<std::string>& run_argv, const std::vector<
     p.run_log = read_file(run_log);
     p.member_log = read_file(member_log);
     return p;
+}
+
+int expect_consistent_markdown_tables(const std::string& md) {
+    std::istringstream in(md);
+    std::string line;
+    long cells = -1;
+    int tables = 0;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] != '|') {
+            cells = -1;
+            continue;
+        }
+        const std::string unescaped = std::regex_replace(line, std::regex(R"(\\\|)"), "");
+        const long n = std::count(unescaped.begin(), unescaped.end(), '|');
+        if (cells < 0) {
+            cells = n;
+            ++tables;
+        }
+        EXPECT_EQ(n, cells) << line;
+    }
+    return tables;
 }
 
 }  // namespace gdnav::testing

@@ -38,6 +38,9 @@ std::string read_file(const std::filesystem::path& p);
 std::map<std::string, pid_t> read_processes(const std::filesystem::path& out_dir);
 // topic -> digest of <out>/record/digest.yaml (empty when missing).
 std::map<std::string, std::string> read_digests(const std::filesystem::path& out_dir);
+// Checks (EXPECT) that every Markdown table in `md` has the same number of cells in each of its lines (escaped \|
+// not counted) and returns how many tables there are.
+int expect_consistent_markdown_tables(const std::string& md);
 // A fresh temporary directory for one test.
 std::filesystem::path temp_dir(const std::string& tag);
 // Path of gdnav-testchain and of the chain scenario.
