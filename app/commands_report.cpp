@@ -1,5 +1,6 @@
 // gdnav report DIR [DIR2 ...]: the paper's aggregated tables and figures of one or more batch directories; the
-// directories of one batch (its shards) are merged into one block (batch_merge.hpp).
+// directories of one batch (its shards) are merged into one block (batch_merge.hpp); with the figures, the HTML
+// flight review pages (tools/report/review.py).
 #include "commands_report.hpp"
 
 #include <sys/wait.h>
@@ -62,17 +63,20 @@ void write_text(const fs::path& p, const std::string& text) {
     if (!f) throw std::runtime_error("cannot write " + p.string());
 }
 
-int run_figures(const fs::path& batch, const fs::path& out) {
+// Runs a Python tool of tools/report/ (report.py: PNG figures; review.py: HTML flight review pages) with Debian's
+// /usr/bin/python3 ($GDNAV_PYTHON); $GDNAV_REPORT_SCRIPT names report.py elsewhere, the other tools beside it.
+int run_report_tool(const std::string& name, std::vector<std::string> args) {
     const char* py_env = std::getenv("GDNAV_PYTHON");
     const char* script_env = std::getenv("GDNAV_REPORT_SCRIPT");
     const std::string py = py_env && *py_env ? py_env : "/usr/bin/python3";
-    const fs::path script = script_env && *script_env ? fs::path(script_env)
+    const fs::path report = script_env && *script_env ? fs::path(script_env)
                                                       : runtime::config_dir().parent_path() / "tools/report/report.py";
+    const fs::path script = name == "report.py" ? report : report.parent_path() / name;
     if (!fs::exists(script)) {
         spdlog::error("figures: {} not found (set GDNAV_REPORT_SCRIPT)", script.string());
         return 1;
     }
-    std::vector<std::string> args{py, script.string(), batch.string(), "--out", out.string()};
+    args.insert(args.begin(), {py, script.string()});
     std::vector<char*> argv;
     for (auto& s : args) argv.push_back(s.data());
     argv.push_back(nullptr);
@@ -141,7 +145,13 @@ int write_batch_report(const std::vector<fs::path>& dirs, const ReportOptions& o
             if (!batches[i].runs.empty()) {
                 const fs::path fig_out = groups.size() == 1 ? out : out / ("batch_" + std::to_string(i + 1));
                 const fs::path view = out / ".runs_view";
-                code = std::max(code, run_figures(runs_view(groups[i], batches[i].runs, view), fig_out));
+                const fs::path batch = runs_view(groups[i], batches[i].runs, view);
+                code = std::max(code, run_report_tool("report.py", {batch.string(), "--out", fig_out.string()}));
+                const std::string csv = batches.size() == 1 ? "runs.csv" : "runs_" + std::to_string(i + 1) + ".csv";
+                if (o.review)
+                    code = std::max(code, run_report_tool("review.py", {batch.string(), "--out", fig_out.string(),
+                                                                        "--tables", (out / "tables.md").string(),
+                                                                        "--runs-csv", (out / csv).string()}));
                 std::error_code ec;
                 fs::remove_all(view, ec);
             }
@@ -153,16 +163,19 @@ CLI::App* add_report_command(CLI::App& app, CliContext& ctx, CommandRunner& run)
         std::vector<std::string> dirs;
         std::string out;
         bool no_figures{false};
+        bool no_review{false};
     };
     auto a = std::make_shared<Args>();
     auto* sub = app.add_subcommand("report", "aggregate a Monte Carlo batch: the paper's tables and figures");
     sub->add_option("dirs", a->dirs, "batch directories (gdnav montecarlo --out); shards of one batch: merged; batches: side by side")->required();
     sub->add_option("--out", a->out, "output folder (default: <first dir>/report)");
     sub->add_flag("--no-figures", a->no_figures, "tables only");
+    sub->add_flag("--no-review", a->no_review, "no HTML flight review pages (review.html, review/run_*.html)");
     run = [a, &ctx]() {
         setup_logging("gdnav", ctx.log_level);
         ReportOptions o;
         o.figures = !a->no_figures;
+        o.review = !a->no_review;
         o.out = a->out;
         std::vector<fs::path> dirs(a->dirs.begin(), a->dirs.end());
         return write_batch_report(dirs, o);

@@ -1,7 +1,8 @@
 #pragma once
 // gdnav report / the end of gdnav montecarlo: aggregate a batch directory's per-run metrics into the paper's tables
-// (report/tables.md, aggregate.yaml, runs.csv) and draw the figures with tools/report/report.py (Debian's
-// /usr/bin/python3 with matplotlib, h5py and numpy; override with $GDNAV_PYTHON and $GDNAV_REPORT_SCRIPT).
+// (report/tables.md, aggregate.yaml, runs.csv), draw the figures with tools/report/report.py and write the flight
+// review pages with tools/report/review.py (Debian's /usr/bin/python3 with matplotlib, h5py, numpy and plotly;
+// override with $GDNAV_PYTHON and $GDNAV_REPORT_SCRIPT).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@ namespace gdnav::app {
 
 struct ReportOptions {
     bool figures{true};
+    bool review{true};  // with the figures: the HTML flight review pages (tools/report/review.py, python3-plotly)
     std::filesystem::path out;  // default: <first dir>/report
 };
 

@@ -66,10 +66,18 @@ CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
                     "DDS Security directory made by `gdnav pki init` (run.security; docs/deployment.md)");
     sub->add_option("--plan", a->plan, "deployment plan: run the clock host's slice (docs/deployment.md)")
         ->check(CLI::ExistingFile);
-    sub->add_option("--record", a->rw.record, "record these topics (TOPIC[,TOPIC...]; default = the five sensor topics; or all) to <out>/record/run.mcap")
+    sub->add_option("--record", a->rw.record, "record these topics (TOPIC[,TOPIC...]; default = the five sensor topics; or all; plus `viewer` for the viewer channels, docs/viewing.md) to <out>/record/run.mcap")
         ->delimiter(',');
     sub->add_option("--replay", a->rw.replay_dir, "replay topics recorded in this run directory (docs/replay.md)");
     sub->add_option("--topics", a->rw.replay_topics, "topics to replay with --replay (TOPIC[,TOPIC...])")
+        ->delimiter(',');
+    sub->add_option("--live", a->rw.live_port,
+                    "serve the run live to Foxglove on ws://127.0.0.1:PORT (default 8765; docs/viewing.md)")
+        ->expected(0, 1);
+    sub->add_option("--live-bind", a->rw.live_bind, "address the live view listens on (default 127.0.0.1)");
+    sub->add_option("--live-decimation", a->rw.live_decimation, "stream every N-th step to the live view")
+        ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
+    sub->add_option("--live-topics", a->rw.live_topics, "topics of the live view (TOPIC[,TOPIC...], `viewer` for the viewer channels; default: all,viewer)")
         ->delimiter(',');
     run = [a, sub, &ctx]() {
         setup_logging("gdnav", ctx.log_level);
@@ -79,6 +87,10 @@ CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
                 if (sub->count(opt))
                     throw config::ConfigError(std::string("config error: --plan and ") + opt +
                                               ": the plan names the scenario, seed, domain and layout of each host");
+            for (const char* opt : {"--live", "--live-bind", "--live-decimation", "--live-topics"})
+                if (sub->count(opt))
+                    throw config::ConfigError(std::string("config error: --plan and ") + opt +
+                                              ": give the plan's scenario a `live` member instead (docs/viewing.md)");
             PlanHostArgs pa;
             pa.plan = a->plan;
             pa.out = a->out;
@@ -109,6 +121,7 @@ CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
             const ScenarioDocument s = load_scenario_document(a->scenario, a->o);
             return RunConfig::parse(document_text(s.doc), s.file.string(), o);
         }();
+        a->rw.live = sub->count("--live") > 0;
         if (!a->rw.empty()) rc = apply_run_rewrites(rc, a->rw, ctx.registry);
         LaunchOptions lo;
         lo.layout = a->layout;

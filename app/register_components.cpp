@@ -3,6 +3,7 @@
 #include "control_component.hpp"
 #include "flight_physics_component.hpp"
 #include "guidance_component.hpp"
+#include "live_bridge.hpp"
 #include "nav_recorder.hpp"
 #include "paper_scenarios.hpp"
 #include "nav_components.hpp"
@@ -16,6 +17,7 @@ namespace gdnav::app {
 void register_all_components(runtime::ComponentRegistry& reg) {
     recorder::register_recorder(reg);
     replay::register_replay(reg);
+    live::register_live(reg);
     physics::register_flight_physics(reg);
     sensors::register_sensor_components(reg);
     nav::register_nav_components(reg);

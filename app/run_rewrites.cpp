@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include "record_file.hpp"
+#include "runtime/messages.hpp"
 #include "runtime/topic_types.hpp"
 
 namespace gdnav::app {
@@ -64,20 +65,31 @@ YAML::Node sequence(const std::vector<std::string>& v) {
 }
 
 
-void add_recorder(YAML::Node comps, const std::vector<std::string>& names) {
-    const std::vector<std::string> topics = resolve_topics(names, "--record", true);
+// `viewer` in --record: the recorder's viewer channels (components/viewer; docs/viewing.md), with or without topics.
+constexpr const char* kViewerKeyword = "viewer";
+
+void add_recorder(YAML::Node comps, const std::vector<std::string>& all_names) {
+    std::vector<std::string> names;
+    for (const auto& n : all_names)
+        if (n != kViewerKeyword) names.push_back(n);
+    const bool viewer = names.size() != all_names.size();
+    const std::vector<std::string> topics =
+        viewer && names.empty() ? std::vector<std::string>{} : resolve_topics(names, "--record", true);
     if (comps[kRecorderName]) {
         const YAML::Node type = comps[kRecorderName]["type"];
         if (!type || type.as<std::string>() != "recorder")
             fail("--record", std::string("the run already has a member named '") + kRecorderName +
                                  "' that is not a recorder");
-        spdlog::info("--record: the run's member '{}' now records {}", kRecorderName, join(topics));
+        spdlog::info("--record: the run's member '{}' now records {}{}", kRecorderName, join(topics),
+                     viewer ? (topics.empty() ? "the viewer channels" : " and the viewer channels") : "");
     } else {
-        spdlog::info("--record: member '{}' records {}", kRecorderName, join(topics));
+        spdlog::info("--record: member '{}' records {}{}", kRecorderName, join(topics),
+                     viewer ? (topics.empty() ? "the viewer channels" : " and the viewer channels") : "");
     }
     YAML::Node r(YAML::NodeType::Map);
     r["type"] = "recorder";
     r["topics"] = sequence(topics);
+    if (viewer) r["viewer"] = true;
     comps[kRecorderName] = r;
 }
 
@@ -138,6 +150,54 @@ void add_replay(YAML::Node root, const RunConfig& rc, const RunRewrites& rw, con
         spdlog::info("--replay: {} from {} replace member(s) {}", join(topics), record_dir.string(), join(removed));
 }
 
+constexpr const char* kLiveName = "live";
+// The topics the viewer channels derive from (components/viewer/viewer_channels.hpp).
+constexpr const char* kViewerInputs[] = {topics::kTruth, topics::kAttitude, topics::kPosition, topics::kAirData};
+
+// --live [PORT] (+ --live-bind, --live-decimation, --live-topics): a `live` member (components/live/live_bridge.hpp).
+void add_live(YAML::Node comps, const RunConfig& rc, const RunRewrites& rw, const runtime::ComponentRegistry& reg) {
+    if (!rw.live) {
+        for (const auto& [given, opt] : {std::pair{!rw.live_bind.empty(), "--live-bind"},
+                                         std::pair{rw.live_decimation > 0, "--live-decimation"},
+                                         std::pair{!rw.live_topics.empty(), "--live-topics"}})
+            if (given) fail(opt, "needs --live [PORT]");
+        return;
+    }
+    if (comps[kLiveName]) fail("--live", std::string("the run already has a member named '") + kLiveName + "'");
+    YAML::Node l(YAML::NodeType::Map);
+    l["type"] = "live";
+    if (!rw.live_port.empty()) {
+        const std::string& p = rw.live_port;
+        const bool digits = p.size() <= 5 && p.find_first_not_of("0123456789") == std::string::npos;
+        if (!digits || std::stoul(p) < 1 || std::stoul(p) > 65535)
+            fail("--live", "port '" + p + "' is not an integer in [1, 65535]");
+        l["port"] = std::stoul(p);
+    }
+    if (!rw.live_bind.empty()) l["bind"] = rw.live_bind;
+    if (rw.live_decimation > 0) l["decimation"] = rw.live_decimation;
+    // Default: every data topic a member of the run writes, and the viewer channels when the run writes their inputs
+    // (Truth and the three estimates); `viewer` in --live-topics adds them to the listed topics.
+    std::vector<std::string> names;
+    for (const auto& n : rw.live_topics)
+        if (n != kViewerKeyword) names.push_back(n);
+    bool viewer = names.size() != rw.live_topics.size();
+    if (rw.live_topics.empty()) {
+        std::set<std::string> written;
+        for (const auto& c : rc.build(reg))
+            for (const auto* o : c->outputs()) written.insert(o->topic());
+        for (const auto& t : runtime::known_topics())
+            if (written.count(t)) names.push_back(t);
+        viewer = std::all_of(std::begin(kViewerInputs), std::end(kViewerInputs),
+                             [&](const char* t) { return written.count(t) > 0; });
+        if (names.empty()) fail("--live", "no member of the run writes a data topic (give --live-topics)");
+        spdlog::info("--live: member '{}' streams {}{}", kLiveName, join(names), viewer ? " and the viewer channels" : "");
+    }
+    if (!names.empty()) l["topics"] = sequence(resolve_topics(names, "--live-topics", true));
+    else l["topics"] = YAML::Node(YAML::NodeType::Sequence);  // the viewer channels only
+    l["viewer"] = viewer;
+    comps[kLiveName] = l;
+}
+
 }  // namespace
 
 RunConfig apply_run_rewrites(const RunConfig& rc, const RunRewrites& rw, const runtime::ComponentRegistry& reg) {
@@ -145,6 +205,7 @@ RunConfig apply_run_rewrites(const RunConfig& rc, const RunRewrites& rw, const r
     YAML::Node root = YAML::Load(rc.to_yaml());
     if (!rw.record.empty()) add_recorder(root["components"], rw.record);
     if (!rw.replay_dir.empty()) add_replay(root, rc, rw, reg);
+    add_live(root["components"], rc, rw, reg);
     YAML::Emitter em;
     em.SetDoublePrecision(17);
     em << root;

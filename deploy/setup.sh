@@ -19,11 +19,13 @@ packages=(
   cyclonedds-dev cyclonedds-tools
   libeigen3-dev libyaml-cpp-dev libspdlog-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev libgeographiclib-dev libhdf5-dev libzstd-dev
+  libwebsocketpp-dev libasio-dev nlohmann-json3-dev  # the live view (gdnav run --live: common/foxglove_ws)
   libopenmpi-dev openmpi-bin
-  python3 python3-numpy python3-matplotlib python3-h5py python3-dev pybind11-dev
+  python3 python3-numpy python3-matplotlib python3-h5py python3-plotly python3-dev pybind11-dev
   libssl-dev openssl
-  iproute2 procps nftables
+  iproute2 procps nftables iptables libnetfilter-queue-dev
   nodejs
+  chromium  # the flight review test opens the HTML pages of gdnav report headless (tests/integration/review_node)
 )
 # npm: the MCAP test reads recordings with the official TypeScript reader (tests/integration/mcap_node). NodeSource's
 # nodejs package brings its own npm (Debian's npm would conflict with it).

@@ -11,6 +11,7 @@
 
 #include "mcap/mcap_reader.hpp"
 #include "runtime/topic_types.hpp"
+#include "viewer_channels.hpp"
 
 namespace gdnav::recorder {
 
@@ -81,6 +82,11 @@ bool SampleDecoder::decode(const std::uint8_t* bytes, std::uint32_t n, void* sam
 // ------------------------------------------------------------------------------------------------ reading
 namespace {
 
+// A viewer channel (components/viewer) that gdnav wrote: derived data, skipped by gdnav's reader.
+bool is_derived(const mcap::Channel& c, const mcap::Schema* schema) {
+    return schema && viewer::is_viewer_channel(c.topic, schema->name, schema->encoding, c.message_encoding);
+}
+
 // Checks a channel against gdnav's topics; the error names the channel.
 void check_channel(const fs::path& file, const mcap::Channel& c, const mcap::Schema* schema) {
     const std::string where = file.string() + ": channel '" + c.topic + "' (id " + std::to_string(c.id) + ")";
@@ -123,6 +129,10 @@ Recording read_recording(const fs::path& dir, const std::vector<std::string>& wa
         if (it == tracks.end()) {
             Track t;
             const mcap::Channel& c = *m.channel;
+            if (is_derived(c, m.schema)) {  // skipped: nothing to check or keep
+                tracks.emplace(m.channel_id, std::move(t));
+                return;
+            }
             try {
                 check_channel(rec.file, c, m.schema);
             } catch (const std::runtime_error& e) {
@@ -166,7 +176,12 @@ Recording read_recording(const fs::path& dir, const std::vector<std::string>& wa
     // Channels without messages are checked too (a foreign channel is refused even when empty).
     for (const auto& [id, c] : r.channels) {
         const auto s = r.schemas.find(c.schema_id);
-        check_channel(rec.file, c, s == r.schemas.end() ? nullptr : &s->second);
+        const mcap::Schema* schema = s == r.schemas.end() ? nullptr : &s->second;
+        if (is_derived(c, schema)) {
+            rec.derived_channels.push_back(c.topic);
+            continue;
+        }
+        check_channel(rec.file, c, schema);
         rec.channels.push_back(c.topic);
     }
     for (const auto& topic : wanted) {
@@ -211,7 +226,9 @@ std::vector<std::string> recorded_topics(const fs::path& dir) {
     std::vector<std::string> v;
     for (const auto& [id, c] : r.channels) {
         const auto s = r.schemas.find(c.schema_id);
-        check_channel(file, c, s == r.schemas.end() ? nullptr : &s->second);
+        const mcap::Schema* schema = s == r.schemas.end() ? nullptr : &s->second;
+        if (is_derived(c, schema)) continue;
+        check_channel(file, c, schema);
         v.push_back(c.topic);
     }
     return v;

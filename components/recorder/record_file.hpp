@@ -83,14 +83,16 @@ struct TopicRecord {
 struct Recording {
     std::filesystem::path file;
     std::map<std::string, TopicRecord> topics;  // the topics asked for
-    std::vector<std::string> channels;          // every channel's topic, in channel order
+    std::vector<std::string> channels;          // every gdnav topic channel's topic, in channel order
+    std::vector<std::string> derived_channels;  // the viewer channels (components/viewer): skipped, not decoded
     std::map<std::string, std::string> run_metadata;  // the "gdnav.run" metadata record
     std::string run_yaml;                       // the run.yaml attachment ("" when absent)
     bool complete{false};  // the MCAP file is whole (summary, footer, CRCs); false for a run killed mid-write
     std::string problem;   // why not complete, with the byte offset of the cut
 };
 
-// Reads <dir>/run.mcap: every channel must be a known gdnav topic in CDR with its omgidl schema (anything else —
+// Reads <dir>/run.mcap: every channel must be a known gdnav topic in CDR with its omgidl schema, or one of gdnav's
+// viewer channels (components/viewer/viewer_channels.hpp; listed in derived_channels, messages skipped) (anything else —
 // an MCAP written by another tool — throws std::runtime_error "FILE: channel 'TOPIC' (id N): ..."); each topic of
 // `topics` (full names; empty: every channel) must have a channel; its messages are checked: every payload decodes
 // as the topic's type and the messages' sequences (the recorded steps; a delayed sample keeps its older stamp) strictly
@@ -100,7 +102,8 @@ struct Recording {
 // problem otherwise.
 Recording read_recording(const std::filesystem::path& dir, const std::vector<std::string>& topics = {});
 
-// The topics of the recording's channels, from its summary (quick), or from a scan when it has none (cut short).
+// The topics of the recording's channels (viewer channels left out), from its summary (quick), or from a scan when it
+// has none (cut short).
 // Throws as read_recording() on a channel that is not a gdnav topic.
 std::vector<std::string> recorded_topics(const std::filesystem::path& dir);
 

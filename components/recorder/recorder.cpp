@@ -17,7 +17,9 @@ void Recorder::configure(const config::Config& cfg, const runtime::RunInfo& run,
     const auto topics = cfg.get_strings("topics");
     decimation_ = static_cast<std::uint64_t>(cfg.get_int("decimation", 1, 1, 100000));
     chunk_bytes_ = static_cast<std::size_t>(cfg.get_int("chunk_kib", 1024, 1, 65536)) * 1024;
-    if (topics.empty()) cfg.fail("topics", "at least one topic is required");
+    const bool with_viewer = cfg.get_bool("viewer", false);
+    const auto viewer_decimation = static_cast<std::uint64_t>(cfg.get_int("viewer_decimation", 10, 1, 100000));
+    if (topics.empty() && !with_viewer) cfg.fail("topics", "at least one topic is required (or viewer: true)");
     for (const auto& t : topics) {
         const runtime::MessageOps* ops = runtime::find_topic(t);
         if (!ops) {
@@ -29,6 +31,7 @@ void Recorder::configure(const config::Config& cfg, const runtime::RunInfo& run,
         tr->input = std::make_unique<runtime::InputBase>(*this, t, runtime::Lag::Same, *ops);
         tracks_.push_back(std::move(tr));
     }
+    if (with_viewer) viewer_ = std::make_unique<viewer::ViewerChannels>(*this, viewer::ViewerOptions{viewer_decimation});
     dir_ = run.out_dir.empty() ? std::string() : (std::filesystem::path(run.out_dir) / "record").string();
     run_ = run;
 }
@@ -45,6 +48,7 @@ void Recorder::open_file() {
         o.run_yaml = text.str();
     }
     o.run_metadata = run_metadata(run_, o.run_yaml);
+    if (viewer_) o.derived_channels = viewer_->channels();
     std::vector<std::string> topics;
     for (const auto& tr : tracks_) topics.push_back(tr->input->topic());
     writer_ = std::make_unique<RecordingWriter>(dir_, topics, std::move(o));
@@ -53,6 +57,11 @@ void Recorder::open_file() {
 void Recorder::step(const runtime::StepContext& ctx) {
     if (dir_.empty()) return;
     open_file();
+    if (viewer_) {
+        viewer_out_.clear();
+        viewer_->encode(ctx, ctx.k * step_ns(run_.dt_s), viewer_out_);
+        for (const auto& [channel, cdr] : viewer_out_) writer_->append_encoded(channel, ctx.k, cdr);
+    }
     if (ctx.k % decimation_ != 0) return;
     for (std::size_t i = 0; i < tracks_.size(); ++i) {
         Track* tr = tracks_[i].get();

@@ -1,7 +1,12 @@
 #pragma once
 // recorder: subscribes to a configured list of topics and writes every sample in lockstep order.
 //
-//   recorder: {type: recorder, topics: [gdnav/ImuSample, ...], decimation: 1, chunk_kib: 1024}
+//   recorder: {type: recorder, topics: [gdnav/ImuSample, ...], decimation: 1, chunk_kib: 1024,
+//              viewer: false, viewer_decimation: 10}
+//
+// viewer: true adds the viewer channels (components/viewer/viewer_channels.hpp: Foxglove LocationFix and
+// FrameTransform of the true and estimated state, the navigation errors) every `viewer_decimation` steps; the run
+// then needs producers of Truth and the three estimates. `topics` may be empty when viewer is true.
 //
 // Files in <out_dir>/record/ (record_file.hpp):
 //   run.mcap      — one indexed MCAP file, a channel per topic (CDR messages, omgidl schemas), one message per
@@ -18,6 +23,7 @@
 #include "recording_writer.hpp"
 #include "runtime/component.hpp"
 #include "runtime/registry.hpp"
+#include "viewer_channels.hpp"
 
 namespace gdnav::recorder {
 
@@ -36,6 +42,8 @@ private:
     };
     void open_file();
     std::vector<std::unique_ptr<Track>> tracks_;
+    std::unique_ptr<viewer::ViewerChannels> viewer_;  // the viewer channels (viewer: true), after the topics
+    std::vector<viewer::ViewerMessage> viewer_out_;
     std::unique_ptr<RecordingWriter> writer_;  // opened at the first step (run.yaml is written by then)
     runtime::RunInfo run_;
     std::string dir_;

@@ -34,6 +34,13 @@ RecordingWriter::RecordingWriter(const fs::path& dir, const std::vector<std::str
         const std::uint16_t channel = mcap_->add_channel(it->second, topic, kMessageEncoding);
         tracks_.push_back(Track{topic, ops, channel});
     }
+    for (const auto& d : o.derived_channels) {
+        auto it = schema_ids.find(d.schema_name);
+        if (it == schema_ids.end())
+            it = schema_ids.emplace(d.schema_name, mcap_->add_schema(d.schema_name, d.schema_encoding, d.schema)).first;
+        tracks_.push_back(Track{d.topic, nullptr, mcap_->add_channel(it->second, d.topic, d.message_encoding)});
+    }
+    topic_count_ = topics.size();
     batch_.bytes.reserve(kBatchBytes + 4096);
     thread_ = std::thread([this] { write_batches(); });
 }
@@ -41,12 +48,23 @@ RecordingWriter::RecordingWriter(const fs::path& dir, const std::vector<std::str
 RecordingWriter::~RecordingWriter() { stop_thread(); }  // unclosed: the MCAP writer completes the file
 
 void RecordingWriter::append(std::size_t i, std::uint64_t step, const void* sample) {
-    Track& t = tracks_.at(i);
+    if (i >= topic_count_) throw std::logic_error("RecordingWriter: no topic " + std::to_string(i));
+    tracks_[i].ops->serialize(sample, buffer_);
+    add_item(i, step, buffer_);
+}
+
+void RecordingWriter::append_encoded(std::size_t derived_index, std::uint64_t step, const std::vector<std::uint8_t>& cdr) {
+    const std::size_t i = topic_count_ + derived_index;
+    if (i >= tracks_.size()) throw std::logic_error("RecordingWriter: no derived channel " + std::to_string(derived_index));
+    add_item(i, step, cdr);
+}
+
+void RecordingWriter::add_item(std::size_t i, std::uint64_t step, const std::vector<std::uint8_t>& cdr) {
+    Track& t = tracks_[i];
     if (t.appended > 0 && step <= t.last_appended)
         throw std::logic_error("RecordingWriter: steps must increase (" + t.topic + ")");
-    t.ops->serialize(sample, buffer_);
-    batch_.items.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(buffer_.size()), step});
-    batch_.bytes.insert(batch_.bytes.end(), buffer_.begin(), buffer_.end());
+    batch_.items.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(cdr.size()), step});
+    batch_.bytes.insert(batch_.bytes.end(), cdr.begin(), cdr.end());
     ++t.appended;
     t.last_appended = step;
     if (batch_.bytes.size() >= kBatchBytes) submit();

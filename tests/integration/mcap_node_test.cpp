@@ -4,7 +4,9 @@
 // (mcap_node/check_mcap.mjs). The values must equal gdnav's own reader's: every field (field tables of the IDL) of
 // every topic at several steps, message counts, metadata and the run.yaml attachment.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -82,6 +84,28 @@ std::string sample_json(const fields::TypeFields& table, void* sample) {
     return o.str() + "}";
 }
 
+// One double column of a run.h5 table (nav_recorder's compound rows; empty when missing).
+std::vector<double> h5_column(const fs::path& h5, const char* table, const char* name) {
+    std::vector<double> v;
+    const hid_t f = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (f < 0) return v;
+    const hid_t d = H5Dopen2(f, table, H5P_DEFAULT);
+    if (d >= 0) {
+        const hid_t s = H5Dget_space(d);
+        hsize_t n = 0;
+        H5Sget_simple_extent_dims(s, &n, nullptr);
+        const hid_t one = H5Tcreate(H5T_COMPOUND, sizeof(double));
+        H5Tinsert(one, name, 0, H5T_NATIVE_DOUBLE);
+        v.resize(n);
+        if (n == 0 || H5Dread(d, one, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0) v.clear();
+        H5Tclose(one);
+        H5Sclose(s);
+        H5Dclose(d);
+    }
+    H5Fclose(f);
+    return v;
+}
+
 }  // namespace
 
 TEST(McapNode, OfficialReaderDecodesEveryMessageLikeGdnavsReader) {
@@ -127,6 +151,65 @@ TEST(McapNode, OfficialReaderDecodesEveryMessageLikeGdnavsReader) {
     std::ofstream(expected) << json.str();
 
     const std::string script = std::string(GDNAV_MCAP_NODE_DIR) + "/check_mcap.mjs";
+    const Result node = run({GDNAV_NODE, script, (out / "record" / "run.mcap").string(), expected.string()}, 120.0);
+    std::printf("%s", node.output.c_str());
+    EXPECT_EQ(node.exit_code, 0) << node.output;
+    EXPECT_NE(node.output.find("PASS"), std::string::npos);
+    if (!::testing::Test::HasFailure()) fs::remove_all(out);
+}
+
+// Issue 16 item 2: the viewer channels (--record ...,viewer; components/viewer) of a scenario-#2 run that crosses the
+// GNSS loss (t = 100 s) are decoded by Foxglove's deserializer from the schemas in the file and compared, in
+// mcap_node/check_viewer.mjs, with the raw topics of the same file and with the run's run.h5 /error rows (the
+// nav_recorder's errors, written here as EXPECTED.json). gdnav's own reader skips the viewer channels.
+TEST(McapNode, ViewerChannelsDecodeAndMatchTruthEstimatesAndRunH5) {
+    gdnav::runtime::register_gdnav_topics();
+    const fs::path out = temp_dir("mcap-viewer");
+    constexpr std::uint64_t kSteps = 16001;  // t = -50 .. 110 s
+    const Result r = run({GDNAV_GDNAV_EXE, "run", "--scenario", "paper2", "--seed", "1", "--steps", std::to_string(kSteps),
+                          "--layout", "direct", "--record", "Truth,AttitudeEstimate,PositionEstimate,viewer", "--out",
+                          out.string()},
+                         240.0);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+
+    const gdnav::recorder::Recording rec = gdnav::recorder::read_recording(out / "record");
+    ASSERT_TRUE(rec.complete) << rec.problem;
+    EXPECT_EQ(rec.topics.size(), 3u);
+    EXPECT_EQ(rec.derived_channels.size(), 5u);
+    const double t0 = std::stod(rec.run_metadata.at("t0_s"));
+    const double dt = std::stod(rec.run_metadata.at("dt_s"));
+
+    // run.h5 /error, keyed by step (rows every `decimation` steps of the nav_recorder, 10 by default as the viewer's).
+    const fs::path h5 = out / "run.h5";
+    const std::vector<double> t_s = h5_column(h5, "error", "t_s");
+    ASSERT_GT(t_s.size(), 1000u);
+    const char* cols[] = {"rot_rad", "yaw_rad", "pitch_rad", "bank_rad", "hor_m", "cross_m",
+                          "along_m", "h_m",     "vn_mps",    "ve_mps",   "tas_mps"};
+    std::vector<std::vector<double>> values;
+    for (const char* c : cols) {
+        values.push_back(h5_column(h5, "error", c));
+        ASSERT_EQ(values.back().size(), t_s.size()) << c;
+    }
+    std::ostringstream json;
+    char buf[64];
+    json << "{\"step_ns\": " << rec.run_metadata.at("step_ns") << ", \"decimation\": 10, \"steps\": " << kSteps
+         << ", \"t0_s\": " << rec.run_metadata.at("t0_s") << ", \"dt_s\": " << rec.run_metadata.at("dt_s")
+         << ", \"errors\": {";
+    for (std::size_t i = 0; i < t_s.size(); ++i) {
+        const long long k = std::llround((t_s[i] - t0) / dt);
+        ASSERT_EQ(k % 10, 0) << "run.h5 row " << i;
+        json << (i ? ", " : "") << "\"" << k << "\": {";
+        for (std::size_t c = 0; c < values.size(); ++c) {
+            std::snprintf(buf, sizeof(buf), "%.17g", values[c][i]);
+            json << (c ? ", " : "") << "\"" << cols[c] << "\": " << buf;
+        }
+        json << "}";
+    }
+    json << "}}\n";
+    const fs::path expected = out / "expected_viewer.json";
+    std::ofstream(expected) << json.str();
+
+    const std::string script = std::string(GDNAV_MCAP_NODE_DIR) + "/check_viewer.mjs";
     const Result node = run({GDNAV_NODE, script, (out / "record" / "run.mcap").string(), expected.string()}, 120.0);
     std::printf("%s", node.output.c_str());
     EXPECT_EQ(node.exit_code, 0) << node.output;

@@ -3,8 +3,8 @@
 //       reports it clearly and everything before the cut is readable, bit-identical to an uninterrupted recording,
 //       and replays (--steps up to the cut);
 //   (b) size and cost, printed (not asserted, about 15 s): MCAP bytes per simulated hour of scenario #1 with the default
-//       recorded topics (--record default: the five sensor topics), with Truth and with every topic, and the run's
-//       steps/s with and without the recorder (direct layout).
+//       recorded topics (--record default: the five sensor topics), with Truth, with the viewer channels and with
+//       every topic, and the run's steps/s with and without the recorder (direct layout).
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -126,6 +126,7 @@ TEST(Mcap, SizePerSimulatedHourAndRecordingCostArePrinted) {
     std::vector<Case> cases{{"no recorder", {}},
                             {"--record default", {"--record", "default"}},
                             {"default,Truth", {"--record", "default,Truth"}},
+                            {"default,viewer", {"--record", "default,viewer"}},  // + the viewer channels (10 Hz)
                             {"--record all", {"--record", "all"}}};
     for (int rep = 0; rep < 3; ++rep)
         for (auto& c : cases) {

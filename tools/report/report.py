@@ -23,15 +23,14 @@ import math
 import os
 import sys
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-import yaml  # noqa: E402
 
-DEG = 180.0 / math.pi
+from batch_runs import DEG, Streamed, batch_label, load_runs, read_table, signal  # noqa: E402
+
 # (column of /error, label, scale to plot units, unit)
 ATTITUDE = [("yaw_rad", r"$\hat\psi-\psi$", DEG, "deg"), ("pitch_rad", r"$\hat\theta-\theta$", DEG, "deg"),
             ("bank_rad", r"$\hat\xi-\xi$", DEG, "deg"), ("rot_rad", r"$\|\Delta\hat r\|$", DEG, "deg")]
@@ -40,67 +39,8 @@ AIR = [("tas_mps", r"$\hat v_{TAS}-v_{TAS}$", 1.0, "m/s"), ("aoa_rad", r"$\hat\a
 COLUMNS = [c[0] for c in ATTITUDE + AIR] + ["h_m", "vn_mps", "ve_mps", "hor_m", "cross_m", "along_m"]
 
 
-def load_runs(batch):
-    """Complete runs: list of dicts with the metrics record and the run.h5 path, sorted by run index."""
-    runs = []
-    root = os.path.join(batch, "runs")
-    for name in sorted(os.listdir(root)) if os.path.isdir(root) else []:
-        d = os.path.join(root, name)
-        m, h = os.path.join(d, "metrics.yaml"), os.path.join(d, "run.h5")
-        if not (os.path.isfile(m) and os.path.isfile(h)):
-            continue
-        with open(m) as f:
-            rec = yaml.safe_load(f)
-        if rec.get("complete") is True:
-            runs.append({"index": int(rec["run_index"]), "metrics": rec, "h5": h})
-    runs.sort(key=lambda r: r["index"])
-    return runs
-
-
-def signal(rec, key, stat):
-    v = rec["signals"][key][stat]
-    return float(v) if v is not None else float("nan")
-
-
-class Streamed:
-    """Across-run mean and population std per time sample, one run at a time."""
-
-    def __init__(self):
-        self.n = 0
-        self.t = None
-        self.s1 = {}
-        self.s2 = {}
-
-    def add(self, t, err):
-        if self.t is None:
-            self.t = t
-            for c in COLUMNS:
-                self.s1[c] = np.zeros_like(t)
-                self.s2[c] = np.zeros_like(t)
-        m = min(len(self.t), len(t))
-        if m < len(self.t):  # a shorter run: keep the common time span
-            self.t = self.t[:m]
-            for c in COLUMNS:
-                self.s1[c], self.s2[c] = self.s1[c][:m], self.s2[c][:m]
-        for c in COLUMNS:
-            x = err[c][:m]
-            self.s1[c] += x
-            self.s2[c] += x * x
-        self.n += 1
-
-    def mean_std(self, c):
-        mean = self.s1[c] / self.n
-        var = np.maximum(self.s2[c] / self.n - mean * mean, 0.0)
-        return mean, np.sqrt(var)
-
-
 def read_error(path):
-    with h5py.File(path, "r") as f:
-        e = f["error"]
-        t = e["t_s"][:]
-        cols = {c: e[c][:] for c in COLUMNS}
-        t_gnss = float(f.attrs.get("t_gnss_s", 100.0))
-    return t, cols, t_gnss
+    return read_table(path, "error", COLUMNS)
 
 
 def band(ax, t, mean, std, scale, label):
@@ -215,20 +155,14 @@ def main():
     if not runs:
         print(f"report.py: no complete run in {a.batch}/runs", file=sys.stderr)
         return 1
-    label = os.path.basename(os.path.normpath(a.batch))
-    try:
-        with open(os.path.join(a.batch, "batch.yaml")) as f:
-            gen = (yaml.safe_load(f) or {}).get("generator", "")
-        label = {"paper_scenario1": "scenario #1", "paper_scenario2": "scenario #2"}.get(gen, label)
-    except OSError:
-        pass
+    label = batch_label(a.batch)
 
     best_att, worst_att = rank(runs, "rot_rad", "mean")
     best_h, worst_h = rank(runs, "h_m", "final")
     best_vn, worst_vn = rank(runs, "vn_mps", "final")
     best_hor, worst_hor = rank(runs, "hor_m", "final")
     wanted = {r["index"] for r in (best_att, worst_att, best_h, worst_h, best_vn, worst_vn, best_hor, worst_hor) if r}
-    stats, series, t_gnss = Streamed(), {}, 100.0
+    stats, series, t_gnss = Streamed(COLUMNS), {}, 100.0
     for r in runs:
         t, err, t_gnss = read_error(r["h5"])
         stats.add(t, err)

@@ -1,0 +1,61 @@
+#pragma once
+// live: streams a run to Foxglove / Lichtblick over the Foxglove WebSocket protocol (common/foxglove_ws;
+// docs/viewing.md "Live view"). Added by `gdnav run --live [PORT]` (app/run_rewrites.cpp) or declared in a scenario:
+//
+//   live: {type: live, topics: [gdnav/Truth, ...], viewer: true, viewer_decimation: 10, port: 8765,
+//          bind: 127.0.0.1, decimation: 1, max_pending_kib: 1024, queue_steps: 64}
+//
+//   topics           topics streamed (default: every data topic), one channel each, as in the recording
+//   viewer           also the viewer channels (components/viewer; default false), every viewer_decimation steps
+//   port, bind       where the WebSocket server listens (bind: an IPv4/IPv6 address or localhost; default loopback
+//                    only); checked when the member is configured (a port in use is a configuration error)
+//   decimation       stream the topics every N-th step (k % N == 0)
+//   max_pending_kib  per client: bytes not yet taken by its socket beyond which a frame is dropped for it
+//   queue_steps      frames waiting for the server thread beyond which a frame is dropped for everybody
+//
+// A lockstep member that never makes the run wait: the server starts at the first step; a streamed step
+// serialises the subscribed channels into one frame and hands it to the server thread (foxglove_ws::Server:
+// bounded queue, per-client drop policy); with no subscribed client, or only stalled ones (foxglove_ws::Server: they
+// are counted as dropping the steps skipped meanwhile), the topics cost nothing (the viewer channels,
+// when on, are still computed every viewer_decimation steps, so that their ENU origin is the recording's). Log time = k * dt_ns, as in
+// the recording. At the end the per-client sent/dropped counts are logged and written to <out>/<name>_stats.yaml.
+//
+// Adding channels: implement a ChannelSource (channel_source.hpp: channels() and encode(), as TopicChannels and
+// ViewerSource do) and append it to `sources_` in configure(); the bridge gives it the next channel ids, advertises
+// its channels and calls it at every step.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "channel_source.hpp"
+#include "foxglove_ws/server.hpp"
+#include "runtime/registry.hpp"
+
+namespace gdnav::live {
+
+class LiveBridge final : public runtime::Component {
+public:
+    explicit LiveBridge(std::string name) : Component(std::move(name)) {}
+    ~LiveBridge() override;
+    void configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream& stream) override;
+    void step(const runtime::StepContext& ctx) override;
+    void finish(bool completed) override;
+
+private:
+    void start_server();
+    std::vector<std::unique_ptr<ChannelSource>> sources_;
+    std::vector<std::uint32_t> first_ids_;  // per source
+    foxglove_ws::ServerOptions options_;
+    std::unique_ptr<foxglove_ws::Server> server_;
+    runtime::RunInfo run_;
+    std::uint64_t decimation_{1};
+    std::uint64_t step_ns_{0};
+    std::uint64_t steps_streamed_{0};  // steps with a frame handed to the server
+    std::uint64_t steps_skipped_{0};   // streamed steps not serialised: every subscribed client was stalled
+    bool finished_{false};
+};
+
+void register_live(runtime::ComponentRegistry& reg);
+
+}  // namespace gdnav::live

@@ -1,0 +1,185 @@
+"""Self-contained HTML pages of plotly figures, for review.py (gdnav's flight review pages).
+
+A page opens offline: plotly.js (Debian's python3-plotly bundle, 8.7 MB of unminified text) is embedded once per
+page, gzip-compressed and base64-encoded (2.5 MB), and unpacked in the browser with DecompressionStream (Chrome 80,
+Firefox 113, Safari 16.4 and later). Each figure is a JSON block that the page draws once plotly.js is loaded; a
+point whose customdata is a page address (".html") opens that page when clicked.
+"""
+import base64
+import gzip
+import html
+import json
+
+import numpy as np
+import plotly
+from plotly.offline import get_plotlyjs
+
+_STYLE = """
+body { font-family: system-ui, sans-serif; margin: 1.2em 2em; color: #222; max-width: 1400px; }
+h1 { font-size: 1.5em; } h2 { font-size: 1.2em; margin-top: 1.6em; border-bottom: 1px solid #ccc; }
+h3 { font-size: 1.0em; margin-top: 1.2em; }
+table { border-collapse: collapse; margin: 0.5em 0; font-size: 0.85em; }
+th, td { border: 1px solid #ccc; padding: 2px 7px; } th { background: #f2f2f2; }
+td.r { text-align: right; font-variant-numeric: tabular-nums; }
+.plot { width: 100%; } .note { color: #555; font-size: 0.85em; }
+#loading { color: #a00; }
+"""
+
+# Unpacks plotly.js, draws every figure, then marks the body (data-plots-ready = number of figures drawn).
+_SCRIPT = """
+(async function () {
+  const status = document.getElementById('loading');
+  if (typeof DecompressionStream === 'undefined') {
+    status.textContent = 'This browser cannot unpack the embedded plotly.js (DecompressionStream is missing).';
+    return;
+  }
+  const b64 = document.getElementById('plotly-js-gz').textContent;
+  const raw = atob(b64);
+  const bytes = new Uint8Array(raw.length);
+  for (let i = 0; i < raw.length; ++i) bytes[i] = raw.charCodeAt(i);
+  const code = await new Response(new Blob([bytes]).stream().pipeThrough(new DecompressionStream('gzip'))).text();
+  (0, eval)(code);
+  const divs = document.querySelectorAll('div.plot');
+  for (const div of divs) {
+    const spec = JSON.parse(document.getElementById(div.id + '-data').textContent);
+    await Plotly.newPlot(div, spec.data, spec.layout, {responsive: true, displaylogo: false});
+    div.on('plotly_click', function (ev) {
+      const p = ev && ev.points && ev.points[0];
+      if (p && typeof p.customdata === 'string' && p.customdata.endsWith('.html')) window.location.href = p.customdata;
+    });
+  }
+  status.remove();
+  document.body.dataset.plotsReady = String(divs.length);
+})();
+"""
+
+_plotly_payload = None
+
+
+def plotly_payload():
+    """plotly.js gzip-compressed and base64-encoded (computed once per process)."""
+    global _plotly_payload
+    if _plotly_payload is None:
+        packed = gzip.compress(get_plotlyjs().encode("utf-8"), compresslevel=9, mtime=0)
+        _plotly_payload = base64.b64encode(packed).decode("ascii")
+    return _plotly_payload
+
+
+def rounded(x, decimals):
+    """An array as a list of floats rounded to DECIMALS places (NaN kept: drawn as a gap)."""
+    return np.round(np.asarray(x, dtype=float), decimals).tolist()
+
+
+def stride_for(n, max_points=4000):
+    """Row step so that a trace of N samples has at most MAX_POINTS points."""
+    return max(1, -(-n // max_points))
+
+
+def esc(text):
+    return html.escape(str(text), quote=True)
+
+
+class Page:
+    """An HTML page: headings, paragraphs, tables and plotly figures, written as one file."""
+
+    def __init__(self, title):
+        self.title = title
+        self.parts = []
+        self.figures = 0
+
+    def add(self, fragment):
+        self.parts.append(fragment)
+
+    def heading(self, text, level=2):
+        self.add(f"<h{level}>{esc(text)}</h{level}>")
+
+    def note(self, text):
+        self.add(f'<p class="note">{esc(text)}</p>')
+
+    def table(self, header, rows, right=None):
+        """HEADER: cell texts; ROWS: lists of cells, each a text or ('html', markup); RIGHT: right-aligned columns."""
+        right = set(range(1, len(header))) if right is None else set(right)
+        out = ["<table><tr>" + "".join(f"<th>{esc(h)}</th>" for h in header) + "</tr>"]
+        for row in rows:
+            cells = []
+            for i, c in enumerate(row):
+                body = c[1] if isinstance(c, tuple) else esc(c)
+                cells.append(f'<td class="r">{body}</td>' if i in right else f"<td>{body}</td>")
+            out.append("<tr>" + "".join(cells) + "</tr>")
+        self.add("".join(out) + "</table>")
+
+    def figure(self, fig, name):
+        """A plotly figure (graph_objects.Figure) drawn in a div with id NAME."""
+        spec = json.dumps(fig.to_plotly_json(), cls=plotly.utils.PlotlyJSONEncoder, separators=(",", ":"))
+        spec = spec.replace("</", "<\\/")  # never ends the script element
+        self.add(f'<div class="plot" id="{esc(name)}"></div>'
+                 f'<script type="application/json" id="{esc(name)}-data">{spec}</script>')
+        self.figures += 1
+
+    def write(self, path):
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(f'<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8"><title>{esc(self.title)}</title>'
+                    f"<style>{_STYLE}</style></head>\n<body>\n"
+                    '<p id="loading">Loading the plots (the plotly.js library is embedded in this page)...</p>\n')
+            for p in self.parts:
+                f.write(p + "\n")
+            f.write('<script type="application/octet-stream" id="plotly-js-gz">')
+            f.write(plotly_payload())
+            f.write(f"</script>\n<script>{_SCRIPT}</script>\n</body></html>\n")
+
+
+def markdown_html(text):
+    """The Markdown gdnav report writes (tables.md: headings, bullet lines, paragraphs, pipe tables) as HTML."""
+    out, table, bullets = [], [], []
+
+    def cells(line):
+        parts, cur, i = [], "", 0
+        body = line.strip()[1:-1] if line.strip().endswith("|") else line.strip()[1:]
+        while i < len(body):
+            if body[i] == "\\" and i + 1 < len(body) and body[i + 1] == "|":
+                cur += "|"
+                i += 2
+                continue
+            if body[i] == "|":
+                parts.append(cur.strip())
+                cur = ""
+            else:
+                cur += body[i]
+            i += 1
+        parts.append(cur.strip())
+        return parts
+
+    def flush():
+        if bullets:
+            out.append("<ul>" + "".join(f"<li>{esc(b)}</li>" for b in bullets) + "</ul>")
+            bullets.clear()
+        if table:
+            head, rows = cells(table[0]), [cells(r) for r in table[2:]]
+            align = [c.endswith(":") for c in cells(table[1])] if len(table) > 1 else []
+            h = "<tr>" + "".join(f"<th>{esc(c)}</th>" for c in head) + "</tr>"
+            b = "".join("<tr>" + "".join(f'<td class="r">{esc(c)}</td>' if i < len(align) and align[i]
+                                         else f"<td>{esc(c)}</td>" for i, c in enumerate(r)) + "</tr>" for r in rows)
+            out.append(f"<table>{h}{b}</table>")
+            table.clear()
+
+    for line in text.splitlines():
+        if line.startswith("|"):
+            if bullets:
+                flush()
+            table.append(line)
+            continue
+        if table:
+            flush()
+        if line.startswith("#"):
+            flush()
+            level = min(len(line) - len(line.lstrip("#")) + 1, 4)
+            out.append(f"<h{level}>{esc(line.lstrip('#').strip())}</h{level}>")
+        elif line.startswith("- "):
+            bullets.append(line[2:])
+        elif line.strip():
+            flush()
+            out.append(f"<p>{esc(line)}</p>")
+        else:
+            flush()
+    flush()
+    return "\n".join(out)
