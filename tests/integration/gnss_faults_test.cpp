@@ -12,7 +12,6 @@
 //     errors close to those of the fault-free run.
 // Every figure is printed. About 9 runs of 55 001 steps: ~15 s on a quiet 2-core machine.
 #include <gtest/gtest.h>
-#include <hdf5.h>
 
 #include <algorithm>
 #include <cmath>
@@ -24,6 +23,7 @@
 #include <vector>
 
 #include "metrics/run_record.hpp"
+#include "h5_column.hpp"
 #include "process_util.hpp"
 
 using namespace gdnav::testing;
@@ -56,33 +56,12 @@ RunOut run_s2(const std::string& tag, int seed, const std::vector<std::string>& 
     return r;
 }
 
-// One column of a nav_recorder table (/error, /estimate: rows of named doubles), all rows; empty on any error.
-std::vector<double> column(const fs::path& h5, const char* table, const char* name) {
-    std::vector<double> v;
-    const hid_t f = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-    if (f < 0) return v;
-    const hid_t d = H5Dopen2(f, table, H5P_DEFAULT);
-    if (d >= 0) {
-        const hid_t s = H5Dget_space(d);
-        hsize_t n = 0;
-        H5Sget_simple_extent_dims(s, &n, nullptr);
-        const hid_t one = H5Tcreate(H5T_COMPOUND, sizeof(double));
-        H5Tinsert(one, name, 0, H5T_NATIVE_DOUBLE);
-        v.resize(n);
-        if (n == 0 || H5Dread(d, one, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0) v.clear();
-        H5Tclose(one);
-        H5Sclose(s);
-        H5Dclose(d);
-    }
-    H5Fclose(f);
-    return v;
-}
 
 struct Series {
     std::vector<double> t, v;
 };
 Series series(const fs::path& dir, const char* table, const char* name) {
-    return {column(dir / "run.h5", table, "t_s"), column(dir / "run.h5", table, name)};
+    return {h5_column(dir / "run.h5", table, "t_s"), h5_column(dir / "run.h5", table, name)};
 }
 
 struct WindowStats {
