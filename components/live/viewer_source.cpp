@@ -1,14 +1,9 @@
 #include "viewer_source.hpp"
 
-#include "runtime/messages.hpp"
-
 namespace gdnav::live {
 
 ViewerSource::ViewerSource(runtime::Component& owner, std::uint64_t decimation)
-    : channels_(owner, viewer::ViewerOptions{decimation}) {
-    for (const runtime::InputBase* in : owner.inputs())
-        if (in->topic() == topics::kTruth && in->lag() == runtime::Lag::Same) truth_ = in;
-}
+    : channels_(owner, viewer::ViewerOptions{decimation}) {}
 
 std::vector<foxglove_ws::Channel> ViewerSource::channels() const {
     std::vector<foxglove_ws::Channel> v;
@@ -19,8 +14,7 @@ std::vector<foxglove_ws::Channel> ViewerSource::channels() const {
 
 void ViewerSource::encode(const runtime::StepContext& ctx, std::uint64_t log_time_ns, std::uint32_t first_id,
                           const foxglove_ws::Server& server, foxglove_ws::Frame& frame) {
-    if (have_origin_ && !server.any_subscribed()) return;
-    have_origin_ = have_origin_ || (truth_ && truth_->available());  // encode() takes it as its origin
+    if (channels_.has_origin() && !server.any_subscribed()) return;  // until then encode() looks for its origin
     out_.clear();
     channels_.encode(ctx, log_time_ns, out_);
     for (const auto& [index, cdr] : out_) {

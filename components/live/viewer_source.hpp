@@ -22,8 +22,6 @@ public:
 
 private:
     viewer::ViewerChannels channels_;
-    const runtime::InputBase* truth_{nullptr};  // the owner's Truth input (the viewer's origin)
-    bool have_origin_{false};
     std::vector<viewer::ViewerMessage> out_;
 };
 

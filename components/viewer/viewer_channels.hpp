@@ -63,6 +63,8 @@ public:
 
     [[nodiscard]] const std::vector<ViewerChannel>& channels() const { return viewer_channels(); }
     [[nodiscard]] std::uint64_t decimation() const { return options_.decimation; }
+    // True once encode() has seen a true position (the ENU origin of the transforms and the errors' radii).
+    [[nodiscard]] bool has_origin() const { return have_origin_; }
     // Appends this step's messages to `out` (nothing at steps between decimated ones). `log_time_ns`: the step's log
     // time, written as every message's foxglove::Time timestamp.
     void encode(const runtime::StepContext& ctx, std::uint64_t log_time_ns, std::vector<ViewerMessage>& out);

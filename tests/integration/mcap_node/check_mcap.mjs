@@ -6,40 +6,23 @@
 // field of the samples at the listed steps, exactly. Exit 0 when everything matches, 1 with the mismatches.
 //
 //   node check_mcap.mjs FILE.mcap EXPECTED.json
-import { readFile, open } from "node:fs/promises";
-import { McapIndexedReader, McapStreamReader } from "@mcap/core";
+import { readFile } from "node:fs/promises";
+import { McapStreamReader } from "@mcap/core";
 import { parseIDL } from "@foxglove/omgidl-parser";
 import { MessageReader } from "@foxglove/omgidl-serialization";
-import zstd from "@foxglove/wasm-zstd";
+import { decompressHandlers as zstdHandlers, indexedReader, problemList } from "./mcap_file.mjs";
 
 const [file, expectedFile] = process.argv.slice(2);
 if (!file || !expectedFile) {
   console.error("usage: node check_mcap.mjs FILE.mcap EXPECTED.json");
   process.exit(2);
 }
-await zstd.isLoaded;
-const decompressHandlers = { zstd: (buffer, size) => zstd.decompress(buffer, Number(size)) };
+const decompressHandlers = await zstdHandlers();
 const expected = JSON.parse(await readFile(expectedFile, "utf8"));
-const problems = [];
-const problem = (s) => {
-  if (problems.length < 50) problems.push(s);
-};
-
-// A random-access IReadable over a file.
-const handle = await open(file, "r");
-const size = BigInt((await handle.stat()).size);
-const readable = {
-  size: async () => size,
-  read: async (offset, length) => {
-    const buf = new Uint8Array(Number(length));
-    const { bytesRead } = await handle.read(buf, 0, buf.length, Number(offset));
-    if (bytesRead !== buf.length) throw new Error(`short read at ${offset}`);
-    return buf;
-  },
-};
+const [problems, problem] = problemList();
 
 // Indexed reader: summary, statistics, chunk indexes, metadata, attachments.
-const reader = await McapIndexedReader.Initialize({ readable, decompressHandlers });
+const { reader, closeFile } = await indexedReader(file);
 console.log(`header: profile '${reader.header.profile}', library '${reader.header.library}'`);
 console.log(`summary: ${reader.channelsById.size} channels, ${reader.schemasById.size} schemas, ` +
   `${reader.chunkIndexes.length} chunks (${[...new Set(reader.chunkIndexes.map((c) => c.compression))].join(",")}), ` +
@@ -149,7 +132,7 @@ while ((record = stream.nextRecord())) {
 }
 if (!sawFooter || !stream.done()) problem("stream reader: did not reach the footer");
 if (BigInt(streamed) !== reader.statistics?.messageCount) problem(`stream reader: ${streamed} messages, statistics ${reader.statistics?.messageCount}`);
-await handle.close();
+await closeFile();
 
 for (const [topic, n] of counts) console.log(`  ${topic}: ${n} messages decoded (${decoders.get([...reader.channelsById].find(([, c]) => c.topic === topic)[0]).type})`);
 console.log(`compared ${decodedFields} field values of ${checkedSamples} samples with gdnav's reader; stream reader: ${streamed} messages; metadata: ${[...metadata.keys()].join(", ")}; run.yaml ${runYaml.length} bytes`);

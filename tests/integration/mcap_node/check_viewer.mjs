@@ -12,42 +12,23 @@
 // Exit 0 when everything matches, 1 with the mismatches.
 //
 //   node check_viewer.mjs FILE.mcap EXPECTED.json
-import { readFile, open } from "node:fs/promises";
-import { McapIndexedReader } from "@mcap/core";
+import { readFile } from "node:fs/promises";
 import { parseIDL } from "@foxglove/omgidl-parser";
 import { MessageReader } from "@foxglove/omgidl-serialization";
-import zstd from "@foxglove/wasm-zstd";
+import { indexedReader, problemList } from "./mcap_file.mjs";
 
 const [file, expectedFile] = process.argv.slice(2);
 if (!file || !expectedFile) {
   console.error("usage: node check_viewer.mjs FILE.mcap EXPECTED.json");
   process.exit(2);
 }
-await zstd.isLoaded;
 const expected = JSON.parse(await readFile(expectedFile, "utf8"));
 const stepNs = BigInt(expected.step_ns);
 const decimation = BigInt(expected.decimation);
-const problems = [];
-const problem = (s) => {
-  if (problems.length < 50) problems.push(s);
-};
+const [problems, problem] = problemList();
 const close = (a, b, tol) => typeof a === "number" && Math.abs(a - b) <= tol * Math.max(1, Math.abs(b));
 
-const handle = await open(file, "r");
-const size = BigInt((await handle.stat()).size);
-const readable = {
-  size: async () => size,
-  read: async (offset, length) => {
-    const buf = new Uint8Array(Number(length));
-    const { bytesRead } = await handle.read(buf, 0, buf.length, Number(offset));
-    if (bytesRead !== buf.length) throw new Error(`short read at ${offset}`);
-    return buf;
-  },
-};
-const reader = await McapIndexedReader.Initialize({
-  readable,
-  decompressHandlers: { zstd: (buffer, n) => zstd.decompress(buffer, Number(n)) },
-});
+const { reader, closeFile } = await indexedReader(file);
 
 const viewerSchemas = {
   "/viewer/true/fix": "foxglove::LocationFix",
@@ -92,7 +73,7 @@ for await (const m of reader.readMessages({ validateCrcs: true })) {
   if (!byTopic.has(d.topic)) byTopic.set(d.topic, new Map());
   byTopic.get(d.topic).set(step, { msg, logTime: m.logTime });
 }
-await handle.close();
+await closeFile();
 const at = (topic, step) => byTopic.get(topic)?.get(step)?.msg;
 
 const deg = (rad) => (rad * 180) / Math.PI;
