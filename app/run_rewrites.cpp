@@ -11,6 +11,7 @@
 #include "record_file.hpp"
 #include "runtime/messages.hpp"
 #include "runtime/topic_types.hpp"
+#include "viewer_channels.hpp"
 
 namespace gdnav::app {
 
@@ -68,11 +69,17 @@ YAML::Node sequence(const std::vector<std::string>& v) {
 // `viewer` in --record: the recorder's viewer channels (components/viewer; docs/viewing.md), with or without topics.
 constexpr const char* kViewerKeyword = "viewer";
 
-void add_recorder(YAML::Node comps, const std::vector<std::string>& all_names) {
+// The names without `viewer`, and whether it was among them.
+std::pair<std::vector<std::string>, bool> split_viewer(const std::vector<std::string>& all_names) {
     std::vector<std::string> names;
     for (const auto& n : all_names)
         if (n != kViewerKeyword) names.push_back(n);
     const bool viewer = names.size() != all_names.size();
+    return {std::move(names), viewer};
+}
+
+void add_recorder(YAML::Node comps, const std::vector<std::string>& all_names) {
+    const auto [names, viewer] = split_viewer(all_names);
     const std::vector<std::string> topics =
         viewer && names.empty() ? std::vector<std::string>{} : resolve_topics(names, "--record", true);
     if (comps[kRecorderName]) {
@@ -151,8 +158,6 @@ void add_replay(YAML::Node root, const RunConfig& rc, const RunRewrites& rw, con
 }
 
 constexpr const char* kLiveName = "live";
-// The topics the viewer channels derive from (components/viewer/viewer_channels.hpp).
-constexpr const char* kViewerInputs[] = {topics::kTruth, topics::kAttitude, topics::kPosition, topics::kAirData};
 
 // --live [PORT] (+ --live-bind, --live-decimation, --live-topics): a `live` member (components/live/live_bridge.hpp).
 void add_live(YAML::Node comps, const RunConfig& rc, const RunRewrites& rw, const runtime::ComponentRegistry& reg) {
@@ -177,18 +182,15 @@ void add_live(YAML::Node comps, const RunConfig& rc, const RunRewrites& rw, cons
     if (rw.live_decimation > 0) l["decimation"] = rw.live_decimation;
     // Default: every data topic a member of the run writes, and the viewer channels when the run writes their inputs
     // (Truth and the three estimates); `viewer` in --live-topics adds them to the listed topics.
-    std::vector<std::string> names;
-    for (const auto& n : rw.live_topics)
-        if (n != kViewerKeyword) names.push_back(n);
-    bool viewer = names.size() != rw.live_topics.size();
+    auto [names, viewer] = split_viewer(rw.live_topics);
     if (rw.live_topics.empty()) {
         std::set<std::string> written;
         for (const auto& c : rc.build(reg))
             for (const auto* o : c->outputs()) written.insert(o->topic());
         for (const auto& t : runtime::known_topics())
             if (written.count(t)) names.push_back(t);
-        viewer = std::all_of(std::begin(kViewerInputs), std::end(kViewerInputs),
-                             [&](const char* t) { return written.count(t) > 0; });
+        const auto& inputs = viewer::viewer_input_topics();
+        viewer = std::all_of(inputs.begin(), inputs.end(), [&](const std::string& t) { return written.count(t) > 0; });
         if (names.empty()) fail("--live", "no member of the run writes a data topic (give --live-topics)");
         spdlog::info("--live: member '{}' streams {}{}", kLiveName, join(names), viewer ? " and the viewer channels" : "");
     }

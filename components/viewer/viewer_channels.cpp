@@ -82,6 +82,12 @@ const std::vector<ViewerChannel>& viewer_channels() {
     return channels;
 }
 
+const std::vector<std::string>& viewer_input_topics() {
+    static const std::vector<std::string> topics{topics::kTruth, topics::kAttitude, topics::kPosition,
+                                                 topics::kAirData};
+    return topics;
+}
+
 bool is_viewer_channel(const std::string& topic, const std::string& schema_name, const std::string& schema_encoding,
                        const std::string& message_encoding) {
     for (const auto& c : viewer_channels())

@@ -50,6 +50,9 @@ struct ViewerOptions {
     std::uint64_t decimation{10};  // steps per viewer message (10: 10 Hz at dt = 0.01 s)
 };
 
+// The topics the channels are derived from (Truth and the three estimates): a run writing all four can show them.
+const std::vector<std::string>& viewer_input_topics();
+
 // One encoded message: index into channels() and its CDR bytes (4-byte encapsulation header included).
 using ViewerMessage = std::pair<std::size_t, std::vector<std::uint8_t>>;
 
