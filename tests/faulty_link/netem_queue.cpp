@@ -5,7 +5,7 @@
 //   iptables-legacy -t mangle -A OUTPUT -o VETH -p udp -j NFQUEUE --queue-num Q --queue-bypass
 //   gdnav-test-netem --queue Q --delay-ms 5 --jitter-ms 1 --loss-pct 1 --reorder-pct 5 [--seed S]
 //
-// Each packet is dropped with probability loss; of the others, reorder % are released at once (they overtake the
+// Each packet is dropped with probability loss (draws from gdnav's rnd::Stream, seeded with --seed); of the others, reorder % are released at once (they overtake the
 // held ones, as netem's `reorder`), the rest after delay + uniform(-jitter, +jitter). SIGTERM/SIGINT: every held
 // packet is released, the counts are printed on stderr, exit 0. With --queue-bypass on the rule, packets pass
 // untouched whenever no program listens on the queue.
@@ -26,6 +26,8 @@
 #include <string>
 #include <vector>
 
+#include "random/stream.hpp"
+
 namespace {
 
 volatile sig_atomic_t g_stop = 0;
@@ -36,18 +38,6 @@ std::int64_t now_ns() {
     clock_gettime(CLOCK_MONOTONIC, &t);
     return static_cast<std::int64_t>(t.tv_sec) * 1000000000 + t.tv_nsec;
 }
-
-// splitmix64: a generator whose output is defined here, not by a library version.
-struct Rng {
-    std::uint64_t s;
-    std::uint64_t next() {
-        std::uint64_t z = (s += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-    double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }  // [0, 1)
-};
 
 struct Options {
     unsigned queue{0};
@@ -63,7 +53,7 @@ struct Held {
 
 struct State {
     Options opt;
-    Rng rng{1};
+    gdnav::rnd::Stream rng;  // gdnav's own generator (common/random), seeded with --seed
     nfq_q_handle* qh{nullptr};
     std::priority_queue<Held, std::vector<Held>, std::greater<>> held;
     std::uint64_t packets{0}, dropped{0}, reordered{0}, delayed{0};
@@ -147,7 +137,7 @@ Options parse(int argc, char** argv) {
 int main(int argc, char** argv) {
     State st;
     st.opt = parse(argc, argv);
-    st.rng.s = st.opt.seed;
+    st.rng = gdnav::rnd::Stream::derive(st.opt.seed, 0, "gdnav-test-netem");
     signal(SIGTERM, on_signal);
     signal(SIGINT, on_signal);
 
