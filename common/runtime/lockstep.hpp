@@ -19,7 +19,7 @@ namespace gdnav::runtime {
 
 inline constexpr double kHeartbeatPeriodS = 0.1;
 inline constexpr double kWaitSliceS = 0.02;  // longest blocking wait in a loop (signals, heartbeats, timeouts)
-inline constexpr std::size_t kInboxRing = 64;  // > window_steps + 2 (a producer can be that far ahead)
+inline constexpr std::size_t kInboxRing = 128;  // > window_steps + 2 (a producer can be that far ahead)
 inline constexpr const char* kClockName = "clock";
 
 // Exit codes of runtime processes.

@@ -125,7 +125,7 @@ RunConfig RunConfig::parse(const std::string& text, const std::string& origin, c
     rc.member_timeout_s = run.get_double("member_timeout_s", 1.5, Range{0.2, 60.0});
     rc.startup_timeout_s = run.get_double("startup_timeout_s", 30.0, Range{1.0, 3600.0});
     rc.stall_timeout_s = run.get_double("stall_timeout_s", 60.0, Range{1.0, 86400.0});
-    rc.window_steps = static_cast<std::uint64_t>(run.get_int("window_steps", 16, 0, 32));
+    rc.window_steps = static_cast<std::uint64_t>(run.get_int("window_steps", 64, 0, 64));
     if (rc.realtime > 0.0) rc.window_steps = 0;
     rc.domain_given = run.has("domain_id");
     rc.domain_id = static_cast<int>(run.get_int("domain_id", 0, 0, 232));

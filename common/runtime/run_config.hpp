@@ -82,7 +82,7 @@ public:
     double member_timeout_s{1.5};
     double startup_timeout_s{30.0};
     double stall_timeout_s{60.0};
-    std::uint64_t window_steps{16};
+    std::uint64_t window_steps{64};
     // StepDone is reported every done_every steps (window/2, at least 1).
     [[nodiscard]] std::uint64_t done_every() const { return window_steps / 2 > 0 ? window_steps / 2 : 1; }
     int domain_id{0};

@@ -124,8 +124,8 @@ TEST(RunConfig, OverridesAndDefaults) {
     EXPECT_EQ(rc.info.seed, 9u);
     EXPECT_EQ(rc.info.run_index, 3u);
     EXPECT_EQ(rc.info.steps, 10u);
-    EXPECT_EQ(rc.window_steps, 16u);
-    EXPECT_EQ(rc.done_every(), 8u);
+    EXPECT_EQ(rc.window_steps, 64u);
+    EXPECT_EQ(rc.done_every(), 32u);
     EXPECT_EQ(rc.members.size(), 4u);
     // The resolved document parses back to the same values.
     const RunConfig again = RunConfig::parse(rc.to_yaml(), "again");
