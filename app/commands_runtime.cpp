@@ -75,7 +75,7 @@ CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
                     "serve the run live to Foxglove on ws://127.0.0.1:PORT (default 8765; docs/viewing.md)")
         ->expected(0, 1);
     sub->add_option("--live-bind", a->rw.live_bind, "address the live view listens on (default 127.0.0.1)");
-    sub->add_option("--live-decimation", a->rw.live_decimation, "stream every N-th step to the live view")
+    sub->add_option("--live-decimation", a->rw.live_decimation, "stream every N-th step of the topics to the live view (default 10: 10 Hz at dt = 0.01 s)")
         ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
     sub->add_option("--live-topics", a->rw.live_topics, "topics of the live view (TOPIC[,TOPIC...], `viewer` for the viewer channels; default: all,viewer)")
         ->delimiter(',');

@@ -69,6 +69,13 @@ public:
     [[nodiscard]] bool available() const { return data_ != nullptr; }
     [[nodiscard]] bool lost() const { return lost_; }
     [[nodiscard]] const void* data_ptr() const { return data_; }
+    // Stride N > 1: the member reads only the samples of steps k with k % N == 0 (k of the sample: k - 1 for
+    // Lag::Previous); at the other steps the input is absent and never waited for. Set before the member is hosted.
+    // Over DDS the reader asks the producers' writers to send only those steps (a writer-side content filter,
+    // runtime/stride_filter.hpp), so a member that uses one step in N does not receive the other N - 1.
+    [[nodiscard]] std::uint64_t stride() const { return stride_; }
+    void set_stride(std::uint64_t n) { stride_ = n > 0 ? n : 1; }
+    [[nodiscard]] bool on_stride(std::uint64_t sample_step) const { return stride_ == 1 || sample_step % stride_ == 0; }
     // Executor side.
     void bind(const void* data) { data_ = data; }
     void mark_lost() { lost_ = true; data_ = nullptr; }
@@ -84,6 +91,7 @@ protected:
 private:
     Lag lag_;
     bool lost_{false};
+    std::uint64_t stride_{1};
 };
 
 class OutputBase : public PortBase {

@@ -5,10 +5,12 @@
 
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
 #include <fastdds/dds/log/Log.hpp>
+#include <fastdds/dds/topic/ContentFilteredTopic.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
 #include <spdlog/spdlog.h>
 
 #include "runtime/security/security.hpp"
+#include "runtime/stride_filter.hpp"
 
 namespace gdnav::runtime {
 
@@ -42,6 +44,7 @@ DdsContext::DdsContext(int domain_id, const std::filesystem::path& profile_file,
                                  (security_dir.empty() ? std::string()
                                                        : " with security identity '" + identity + "' from " +
                                                              security_dir.string() + " (see the Fast DDS log above)"));
+    register_stride_filter(*participant_);  // before any writer: writers filter for strided readers
     publisher_ = participant_->create_publisher(PUBLISHER_QOS_DEFAULT);
     subscriber_ = participant_->create_subscriber(SUBSCRIBER_QOS_DEFAULT);
     if (!publisher_ || !subscriber_) throw std::runtime_error("cannot create DDS publisher/subscriber");
@@ -72,8 +75,16 @@ DataWriter* DdsContext::writer(const std::string& name, const MessageOps& ops, c
     return w;
 }
 
-DataReader* DdsContext::reader(const std::string& name, const MessageOps& ops, const char* profile) {
-    DataReader* r = subscriber_->create_datareader_with_profile(topic(name, ops), profile);
+DataReader* DdsContext::reader(const std::string& name, const MessageOps& ops, const char* profile,
+                               std::uint64_t stride) {
+    TopicDescription* description = topic(name, ops);
+    if (stride > 1) {
+        const std::string cft = name + "/every_" + std::to_string(stride) + "_steps#" + std::to_string(++filtered_topics_);
+        description = participant_->create_contentfilteredtopic(cft, topic(name, ops), "step % stride",
+                                                                {std::to_string(stride)}, kStrideFilterClass);
+        if (!description) throw std::runtime_error("cannot create the content-filtered topic " + cft);
+    }
+    DataReader* r = subscriber_->create_datareader_with_profile(description, profile);
     if (!r) throw std::runtime_error("cannot create DDS reader for " + name + " with profile '" + profile + "'");
     return r;
 }

@@ -3,6 +3,7 @@
 // silently ignores FASTRTPS_DEFAULT_PROFILES_FILE unless profiles are loaded before the default QoS is read).
 // With a security directory the participant authenticates and encrypts (DDS Security). Topics and types are
 // registered once; entities are deleted in the destructor so shared memory is released.
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -37,7 +38,10 @@ public:
     DdsContext& operator=(const DdsContext&) = delete;
 
     eprosima::fastdds::dds::DataWriter* writer(const std::string& topic, const MessageOps& ops, const char* profile);
-    eprosima::fastdds::dds::DataReader* reader(const std::string& topic, const MessageOps& ops, const char* profile);
+    // stride > 1: the reader gets only the samples of steps k % stride == 0, filtered by the writers where they can
+    // (runtime/stride_filter.hpp).
+    eprosima::fastdds::dds::DataReader* reader(const std::string& topic, const MessageOps& ops, const char* profile,
+                                               std::uint64_t stride = 1);
     [[nodiscard]] eprosima::fastdds::dds::DomainParticipant* participant() const { return participant_; }
 
 private:
@@ -46,6 +50,7 @@ private:
     eprosima::fastdds::dds::Publisher* publisher_{nullptr};
     eprosima::fastdds::dds::Subscriber* subscriber_{nullptr};
     std::map<std::string, eprosima::fastdds::dds::Topic*> topics_;
+    unsigned filtered_topics_{0};  // content-filtered topics need names unique in the participant
 };
 
 }  // namespace gdnav::runtime

@@ -92,6 +92,10 @@ void DirectExecutor::step(std::uint64_t k) {
         }
         Component* c = order_[i];
         for (const Binding& b : bindings_[i]) {
+            if (!b.input->on_stride(b.previous ? k - 1 : k)) {  // not a step it reads (component.hpp, stride)
+                b.input->bind(nullptr);
+                continue;
+            }
             const void* data = b.previous ? (b.previous->valid ? b.previous->copy : nullptr) : b.producer->data();
             if (b.faults && (b.previous == nullptr || k > 0)) {
                 const auto d = b.faults->apply(b.previous ? k - 1 : k, data);

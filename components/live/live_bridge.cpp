@@ -1,6 +1,8 @@
 #include "live_bridge.hpp"
 
+#include <algorithm>
 #include <filesystem>
+#include <numeric>
 #include <fstream>
 
 #include <spdlog/spdlog.h>
@@ -32,7 +34,7 @@ void LiveBridge::configure(const config::Config& cfg, const runtime::RunInfo& ru
     options_.name = name();
     options_.port = static_cast<std::uint16_t>(cfg.get_int("port", 8765, 1, 65535));
     options_.address = cfg.get_string("bind", "127.0.0.1");
-    decimation_ = static_cast<std::uint64_t>(cfg.get_int("decimation", 1, 1, 1000000));
+    decimation_ = static_cast<std::uint64_t>(cfg.get_int("decimation", 10, 1, 1000000));
     options_.max_pending_bytes = static_cast<std::size_t>(cfg.get_int("max_pending_kib", 1024, 16, 1 << 20)) * 1024;
     options_.queue_frames = static_cast<std::size_t>(cfg.get_int("queue_steps", 64, 1, 65536));
     try {
@@ -47,6 +49,16 @@ void LiveBridge::configure(const config::Config& cfg, const runtime::RunInfo& ru
     }
     if (!topics.empty()) sources_.push_back(std::make_unique<TopicChannels>(*this, topics, decimation_));
     if (with_viewer) sources_.push_back(std::make_unique<ViewerSource>(*this, viewer_decimation));  // after our inputs
+    // Each input is read only at the steps some source streams (a shared input: both sources' steps), so over DDS
+    // the producers send only those (InputBase::stride).
+    const auto& viewer_topics = viewer::viewer_input_topics();
+    for (runtime::InputBase* in : inputs()) {
+        std::uint64_t n = 0;
+        if (std::find(topics.begin(), topics.end(), in->topic()) != topics.end()) n = std::gcd(n, decimation_);
+        if (with_viewer && std::find(viewer_topics.begin(), viewer_topics.end(), in->topic()) != viewer_topics.end())
+            n = std::gcd(n, viewer_decimation);
+        in->set_stride(n);
+    }
     run_ = run;
     step_ns_ = recorder::step_ns(run.dt_s);
 }

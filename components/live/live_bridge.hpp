@@ -3,13 +3,13 @@
 // docs/viewing.md "Live view"). Added by `gdnav run --live [PORT]` (app/run_rewrites.cpp) or declared in a scenario:
 //
 //   live: {type: live, topics: [gdnav/Truth, ...], viewer: true, viewer_decimation: 10, port: 8765,
-//          bind: 127.0.0.1, decimation: 1, max_pending_kib: 1024, queue_steps: 64}
+//          bind: 127.0.0.1, decimation: 10, max_pending_kib: 1024, queue_steps: 64}
 //
 //   topics           topics streamed (default: every data topic), one channel each, as in the recording
 //   viewer           also the viewer channels (components/viewer; default false), every viewer_decimation steps
 //   port, bind       where the WebSocket server listens (bind: an IPv4/IPv6 address or localhost; default loopback
 //                    only); checked when the member is configured (a port in use is a configuration error)
-//   decimation       stream the topics every N-th step (k % N == 0)
+//   decimation       stream the topics every N-th step (k % N == 0; default 10, 10 Hz at dt = 0.01 s)
 //   max_pending_kib  per client: bytes not yet taken by its socket beyond which a frame is dropped for it
 //   queue_steps      frames waiting for the server thread beyond which a frame is dropped for everybody
 //
@@ -19,6 +19,8 @@
 // are counted as dropping the steps skipped meanwhile), the topics cost nothing (the viewer channels,
 // when on, are still computed every viewer_decimation steps, so that their ENU origin is the recording's). Log time = k * dt_ns, as in
 // the recording. At the end the per-client sent/dropped counts are logged and written to <out>/<name>_stats.yaml.
+// Its inputs read only the steps it streams (InputBase::stride: the topics' decimation, the viewer's, or both's
+// greatest common divisor for an input both use), so over DDS the producers send it one sample in N.
 //
 // Adding channels: implement a ChannelSource (channel_source.hpp: channels() and encode(), as TopicChannels and
 // ViewerSource do) and append it to `sources_` in configure(); the bridge gives it the next channel ids, advertises
@@ -49,7 +51,7 @@ private:
     foxglove_ws::ServerOptions options_;
     std::unique_ptr<foxglove_ws::Server> server_;
     runtime::RunInfo run_;
-    std::uint64_t decimation_{1};
+    std::uint64_t decimation_{10};
     std::uint64_t step_ns_{0};
     std::uint64_t steps_streamed_{0};  // steps with a frame handed to the server
     std::uint64_t steps_skipped_{0};   // streamed steps not serialised: every subscribed client was stalled

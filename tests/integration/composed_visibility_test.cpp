@@ -1,17 +1,14 @@
 // Issue 13 item 1: in the composed layout the members of one process hand samples to each other in process
-// (runtime/host_inbox.hpp), and a topic is published on DDS only while a reader outside the process is matched.
+// (runtime/host/host_inbox.hpp), and a topic is published on DDS only while a reader outside the process is matched.
 // This test is such an outside reader (a monitoring tool that is not a member of the run): it must see the
 // composed run's ImuSample topic on DDS, step after step up to the last one. (That the in-process hand-over gives
 // the same results as the other layouts is the Layouts, Flight and ScheduledFaults tests' bit-identity check.)
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <chrono>
-#include <thread>
+#include <algorithm>
 
-#include <fastdds/dds/subscriber/DataReader.hpp>
-#include <fastdds/dds/subscriber/SampleInfo.hpp>
-
+#include "outside_reader.hpp"
 #include "process_util.hpp"
 #include "runtime/dds_context.hpp"
 #include "runtime/messages.hpp"
@@ -30,7 +27,6 @@ TEST(ComposedVisibility, AReaderOutsideTheProcessSeesEveryStepOfALocallyHandedTo
     ASSERT_NE(ops, nullptr);
     rt::DdsContext dds(kDomain, rt::config_dir() / "dds" / "gdnav_profiles.xml", "gdnav.test.monitor");
     DataReader* reader = dds.reader(gdnav::topics::kImu, *ops, rt::kDataReaderProfile);
-    void* sample = ops->create();
 
     const auto out = temp_dir("composed-monitor");
     const pid_t launcher = start({GDNAV_GDNAV_EXE, "run", "--scenario", "default", "--layout", "composed", "--steps",
@@ -38,28 +34,12 @@ TEST(ComposedVisibility, AReaderOutsideTheProcessSeesEveryStepOfALocallyHandedTo
                                  out.string() + ".log");
     std::uint64_t received = 0, first = UINT64_MAX, last = 0;
     bool increasing = true;
-    int code = -1;
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-    while (std::chrono::steady_clock::now() < deadline) {
-        SampleInfo info;
-        bool any = false;
-        while (reader->take_next_sample(sample, &info) == ReturnCode_t::RETCODE_OK) {
-            if (!info.valid_data) continue;
-            const std::uint64_t s = ops->step_of(sample);
-            if (received > 0 && s <= last) increasing = false;
-            first = std::min(first, s);
-            last = s;
-            ++received;
-            any = true;
-        }
-        if (!any) {
-            if (code != -1) break;  // the run ended and everything it sent is read
-            code = wait_for(launcher, 0.0);  // has it ended?
-            std::this_thread::sleep_for(std::chrono::milliseconds(1));
-        }
-    }
-    if (code == -1) code = wait_for(launcher, 5.0);
-    ops->destroy(sample);
+    const int code = read_while_running(launcher, *reader, *ops, 120.0, [&](std::uint64_t s) {
+        if (received > 0 && s <= last) increasing = false;
+        first = std::min(first, s);
+        last = s;
+        ++received;
+    });
     std::printf("outside reader: %llu ImuSample samples, steps %llu..%llu of a %llu-step composed run\n",
                 static_cast<unsigned long long>(received), static_cast<unsigned long long>(first),
                 static_cast<unsigned long long>(last), static_cast<unsigned long long>(kSteps));

@@ -219,8 +219,8 @@ TEST(LiveNode, StalledClientCostsTheRunNothingAndItsFramesAreDroppedAndCounted) 
     // 10000 steps, every topic every step (~19 MB of messages) at 20x real time: far more than the socket buffers of
     // a client that reads nothing plus the bridge's 1 MiB per client.
     const pid_t run_pid = start({GDNAV_GDNAV_EXE, "run", "--scenario", "paper2", "--seed", "1", "--steps", "10000",
-                                 "--layout", "distributed", "--realtime", "20", "--live", std::to_string(port), "--out",
-                                 out.string()},
+                                 "--layout", "distributed", "--realtime", "20", "--live", std::to_string(port),
+                                 "--live-decimation", "1", "--out", out.string()},
                                 run_log_file);
     const pid_t client_pid = start({GDNAV_NODE, client_script(), "ws://127.0.0.1:" + std::to_string(port),
                                     client_json.string(), "stall", "300"},

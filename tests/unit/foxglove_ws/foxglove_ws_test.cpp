@@ -287,7 +287,9 @@ TEST(FoxgloveWsServer, StalledOnlyClientsStopTheProducerAndCountItsSkippedFrames
         if (k % 16 == 0) std::this_thread::sleep_for(std::chrono::microseconds(500));
     }
     EXPECT_GT(skipped, 0u);  // the client stalled: the producer stopped making frames
-    EXPECT_EQ(server.stalled_clients(), 1u);
+    // Not asserted: that it is still stalled now. The kernel may take more of its backlog later (loopback TCP
+    // buffers grow), which brings it back below half the limit; seen once on a loaded machine.
+    EXPECT_LE(server.stalled_clients(), 1u);
     server.stop();
     const ServerStats s = server.stats();
     ASSERT_EQ(s.clients.size(), 1u);

@@ -1,5 +1,5 @@
 #pragma once
-// The DDS host's per-input inboxes and local members (dds_host.cpp), and the in-process hand-over between members
+// The DDS host's per-input inboxes and local members (dds_host.cpp, host/), and the in-process hand-over between members
 // hosted in the same process (issue 13 item 1): a sample written by a local member goes straight into the inboxes of
 // the local members that read it (a copy, no serialisation, no transport, no thread wake-up); it is published on DDS
 // only while a reader outside the process is matched (another process's member, a recorder, a monitoring tool).

@@ -1,4 +1,4 @@
-#include "runtime/host_inbox.hpp"
+#include "runtime/host/host_inbox.hpp"
 
 #include <fastdds/dds/core/status/PublicationMatchedStatus.hpp>
 
@@ -29,6 +29,7 @@ bool hand_over(const Route& r, const Local& consumer, const void* sample, std::u
         ch.has_latest = true;
         return true;
     }
+    if (!ch.port->on_stride(s)) return true;  // a step the reader does not read (as the DDS stride filter)
     const long i = inbox_index(ch, consumer.next_step, s);
     if (i == kOlder) return true;  // no step of the reader needs it (as with a DDS sample)
     if (i == kTooFar) return false;

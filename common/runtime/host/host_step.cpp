@@ -1,0 +1,159 @@
+// Inputs by step, stepping the local members, publishing and StepDone (part of DdsHost::Impl).
+#include "runtime/host/host_impl.hpp"
+
+#include <algorithm>
+
+#include <fastdds/dds/subscriber/SampleInfo.hpp>
+#include <spdlog/spdlog.h>
+
+namespace gdnav::runtime {
+
+using namespace eprosima::fastdds::dds;
+
+void DdsHost::Impl::read_data(const Local& l, Channel& ch) {
+    SampleInfo info;
+    while (ch.reader->take_next_sample(ch.scratch, &info) == ReturnCode_t::RETCODE_OK) {
+        if (!info.valid_data || ch.ops->run_of(ch.scratch) != ri.run_index) continue;
+        if (ch.free) {
+            ch.ops->copy(ch.latest, ch.scratch);
+            ch.has_latest = true;
+            continue;
+        }
+        const std::uint64_t s = ch.ops->step_of(ch.scratch);
+        const long at = host::inbox_index(ch, l.next_step, s);
+        if (at == host::kOlder) continue;
+        if (at == host::kTooFar) {
+            warn_too_far(l, ch, s);
+            continue;
+        }
+        const auto i = static_cast<std::size_t>(at);
+        std::swap(ch.slot[i], ch.scratch);
+        ch.slot_step[i] = s;
+        ch.full[i] = true;
+    }
+}
+
+void DdsHost::Impl::warn_too_far(const Local& l, const Channel& ch, std::uint64_t s) {
+    if (l.killed) return;  // a member killed by a fault does not read its inputs
+    spdlog::warn("input '{}': sample of step {} is too far ahead of step {}; dropped", ch.port->topic(), s,
+                 l.next_step);
+}
+
+// A local member's output of step k: into the inboxes of the local readers, and on DDS if anyone outside reads it.
+void DdsHost::Impl::publish(host::Output& o, std::uint64_t k) {
+    for (const auto& r : o.routes)
+        if (!host::hand_over(r, locals[r.consumer], o.port->data(), k))
+            warn_too_far(locals[r.consumer], *r.channel, k);
+    if (o.routes.empty() || host::read_outside(o)) o.writer->write(o.port->data());
+}
+
+bool DdsHost::Impl::inputs_ready(const Local& l, std::uint64_t k) {
+    for (Channel* ch : l.inputs) {
+        if (ch->lost) {
+            ch->port->bind(nullptr);
+            continue;
+        }
+        if (ch->free) {
+            ch->port->bind(ch->has_latest ? ch->latest : nullptr);
+            continue;
+        }
+        const std::uint64_t lag = static_cast<std::uint64_t>(ch->port->lag());
+        if (k < lag) {
+            ch->port->bind(nullptr);
+            continue;
+        }
+        const std::uint64_t need = k - lag;
+        if (!ch->port->on_stride(need)) {  // not a step it reads: nothing sent, nothing to wait for
+            ch->port->bind(nullptr);
+            continue;
+        }
+        if (need < ch->lost_until) {  // its producer was dead then
+            ch->port->set_lost(true);
+            continue;
+        }
+        if (ch->revived) ch->port->set_lost(false);
+        if (ch->faults && ch->faults->producer_killed(need)) {  // nothing was published: do not wait
+            ch->port->set_lost(true);
+            continue;
+        }
+        const std::size_t i = need % kInboxRing;
+        if (!ch->full[i] || ch->slot_step[i] != need) return false;
+        if (ch->faults) {
+            const auto d = ch->faults->apply(need, ch->slot[i]);
+            ch->port->set_lost(d.lost);
+            ch->port->bind(d.data);
+            continue;
+        }
+        ch->port->bind(ch->slot[i]);
+    }
+    return true;
+}
+
+void DdsHost::Impl::send_done(const Local& l, std::uint64_t k) {
+    done.run_id(ri.run_index);
+    done.step(k);
+    done.member_index(l.index);
+    done_writer->write(&done);
+}
+
+// Free inputs of a step about to run: how many steps old the sample used is (once per executed step).
+void DdsHost::Impl::record_lateness(const Local& l, std::uint64_t k) {
+    if (opt.free_running) return;  // a free-running member's own inputs are not a deadline
+    for (Channel* ch : l.inputs) {
+        if (!ch->free || ch->lost) continue;
+        if (!ch->has_latest) {
+            ch->lateness.add(-1);
+            continue;
+        }
+        const auto need = static_cast<std::int64_t>(k) - static_cast<std::int64_t>(ch->port->lag());
+        const auto have = static_cast<std::int64_t>(ch->ops->step_of(ch->latest));
+        ch->lateness.add(std::max<std::int64_t>(need - have, 0));  // a newer sample than needed is on time
+    }
+}
+
+// Steps every local member that can; returns true if any stepped.
+bool DdsHost::Impl::advance() {
+    bool any = false;
+    for (auto& l : locals) {
+        if (l.index == UINT32_MAX) continue;
+        while (!l.awaiting_rejoin && have_tick && l.next_step <= tick_step + window_steps &&
+               l.next_step < ri.steps) {
+            const std::uint64_t k = l.next_step;
+            if (!schedule.empty() && !apply_member_faults(l, k)) {
+                any = true;
+                continue;
+            }
+            for (Channel* ch : l.inputs) read_data(l, *ch);
+            if (!inputs_ready(l, k)) break;
+            record_lateness(l, k);
+            const StepContext ctx{k, ri.time_of(k), ri.dt_s, k + 1 == ri.steps};
+            l.comp->step(ctx);
+            for (auto& o : l.outputs) {
+                o.port->ops().set_stamp(o.port->data(), ri.run_index, k, ctx.t_s);
+                publish(o, k);
+            }
+            for (auto& m : l.comp->pending_status()) {
+                spdlog::info("[{}] step {} t={:.2f} s: {}", l.comp->name(), k, ctx.t_s, m);
+                send_status(l, msg::STATUS_MODE, m);
+            }
+            l.comp->pending_status().clear();
+            ++l.next_step;
+            if (!opt.free_running && ((k + 1) % done_every == 0 || k + 1 == ri.steps)) send_done(l, k);
+            any = true;
+        }
+    }
+    return any;
+}
+
+// Free-running inputs (hardware-in-the-loop): summary lines and <out>/lateness/<member>.yaml.
+void DdsHost::Impl::report_lateness() {
+    if (opt.free_running) return;  // a free-running member's own inputs are not a deadline
+    for (const auto& l : locals) {
+        std::vector<std::pair<std::string, const Lateness*>> inputs;
+        for (const Channel* ch : l.inputs)
+            if (ch->free) inputs.emplace_back(ch->port->topic(), &ch->lateness);
+        runtime::report_lateness(l.comp->name(), inputs, rc.out_dir);
+    }
+}
+
+}  // namespace gdnav::runtime

@@ -1,0 +1,47 @@
+#pragma once
+// A DDS reader outside a run (a monitoring tool, not a member): takes every valid sample while the run's launcher
+// runs, and after it ended until nothing is left. Used by the composed-visibility and stride-reader tests.
+#include <sys/types.h>
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <thread>
+
+#include <fastdds/dds/subscriber/DataReader.hpp>
+#include <fastdds/dds/subscriber/SampleInfo.hpp>
+
+#include "process_util.hpp"
+#include "runtime/message_traits.hpp"
+
+namespace gdnav::testing {
+
+// Calls on_step(step of the sample) for each sample; returns the launcher's exit code (-1: still running after
+// timeout_s plus 5 s).
+inline int read_while_running(pid_t launcher, eprosima::fastdds::dds::DataReader& reader,
+                              const runtime::MessageOps& ops, double timeout_s,
+                              const std::function<void(std::uint64_t)>& on_step) {
+    using eprosima::fastdds::dds::SampleInfo;
+    void* sample = ops.create();
+    int code = -1;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+    while (std::chrono::steady_clock::now() < deadline) {
+        SampleInfo info;
+        bool any = false;
+        while (reader.take_next_sample(sample, &info) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) {
+            if (!info.valid_data) continue;
+            on_step(ops.step_of(sample));
+            any = true;
+        }
+        if (!any) {
+            if (code != -1) break;  // the run ended and everything it sent is read
+            code = wait_for(launcher, 0.0);  // has it ended?
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+    }
+    if (code == -1) code = wait_for(launcher, 5.0);
+    ops.destroy(sample);
+    return code;
+}
+
+}  // namespace gdnav::testing
