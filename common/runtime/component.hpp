@@ -69,12 +69,23 @@ public:
     [[nodiscard]] bool available() const { return data_ != nullptr; }
     [[nodiscard]] bool lost() const { return lost_; }
     [[nodiscard]] const void* data_ptr() const { return data_; }
-    // Stride N > 1: the member reads only the samples of steps k with k % N == 0 (k of the sample: k - 1 for
+    // Stride: the member reads only the samples of steps k with k % stride == 0 (k of the sample: k - 1 for
     // Lag::Previous); at the other steps the input is absent and never waited for. Set before the member is hosted.
     // Over DDS the reader asks the producers' writers to send only those steps (a writer-side content filter,
-    // runtime/stride_filter.hpp), so a member that uses one step in N does not receive the other N - 1.
+    // runtime/stride_filter.hpp), so a member that uses one step in N does not receive the others.
+    // set_stride(N) (a member that uses every N-th step) takes the largest divisor of N not above kMaxStride, well
+    // below the writers' history of 72 samples (config/dds), so that a writer sends the reader a sample, and gaps the
+    // skipped ones, before its history wraps (measured: the live bridge at decimation 1000 was no cheaper than at 10).
+    static constexpr std::uint64_t kMaxStride = 32;
     [[nodiscard]] std::uint64_t stride() const { return stride_; }
-    void set_stride(std::uint64_t n) { stride_ = n > 0 ? n : 1; }
+    void set_stride(std::uint64_t n) {
+        stride_ = 1;
+        for (std::uint64_t d = n < kMaxStride ? n : kMaxStride; d > 1; --d)
+            if (n % d == 0) {
+                stride_ = d;
+                break;
+            }
+    }
     [[nodiscard]] bool on_stride(std::uint64_t sample_step) const { return stride_ == 1 || sample_step % stride_ == 0; }
     // Executor side.
     void bind(const void* data) { data_ = data; }
@@ -91,7 +102,7 @@ protected:
 private:
     Lag lag_;
     bool lost_{false};
-    std::uint64_t stride_{1};
+    std::uint64_t stride_{1};  // 1..kMaxStride
 };
 
 class OutputBase : public PortBase {

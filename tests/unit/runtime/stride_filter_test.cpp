@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "runtime/component.hpp"
 #include "runtime/messages.hpp"
 #include "runtime/stride_filter.hpp"
 #include "runtime/topic_types.hpp"
@@ -37,4 +38,32 @@ TEST(StrideFilter, ReadsBigEndianAndRefusesShortPayloads) {
     EXPECT_EQ(step, 0x0807060504030201ULL);
     EXPECT_FALSE(rt::stamp_step_of_cdr(be.data(), 19, step));
     EXPECT_FALSE(rt::stamp_step_of_cdr(nullptr, 0, step));
+}
+
+namespace {
+struct Sink final : rt::Component {
+    Sink() : Component("sink") {}
+    void configure(const gdnav::config::Config&, const rt::RunInfo&, gdnav::rnd::Stream&) override {}
+    void step(const rt::StepContext&) override {}
+};
+}  // namespace
+
+TEST(StrideFilter, AnInputTakesTheLargestDivisorOfItsDecimationUpToTheLimit) {
+    rt::register_gdnav_topics();
+    Sink owner;
+    rt::InputBase in(owner, gdnav::topics::kImu, rt::Lag::Same, *rt::find_topic(gdnav::topics::kImu));
+    const std::vector<std::pair<std::uint64_t, std::uint64_t>> cases{
+        {0, 1}, {1, 1}, {2, 2}, {10, 10}, {32, 32}, {64, 32}, {100, 25}, {1000, 25}, {37, 1}, {74, 2}};
+    for (const auto& [n, want] : cases) {
+        in.set_stride(n);
+        EXPECT_EQ(in.stride(), want) << "decimation " << n;
+        EXPECT_LE(in.stride(), rt::InputBase::kMaxStride);
+        if (n > 0) {
+            EXPECT_EQ(n % in.stride(), 0u) << "the steps it uses are among those it receives";
+        }
+    }
+    in.set_stride(10);
+    EXPECT_TRUE(in.on_stride(0));
+    EXPECT_TRUE(in.on_stride(120));
+    EXPECT_FALSE(in.on_stride(125));
 }
