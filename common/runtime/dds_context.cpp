@@ -77,11 +77,12 @@ DataWriter* DdsContext::writer(const std::string& name, const MessageOps& ops, c
 
 DataReader* DdsContext::reader(const std::string& name, const MessageOps& ops, const char* profile,
                                std::uint64_t stride) {
-    TopicDescription* description = topic(name, ops);
+    Topic* t = topic(name, ops);
+    TopicDescription* description = t;
     if (stride > 1) {
         const std::string cft = name + "/every_" + std::to_string(stride) + "_steps#" + std::to_string(++filtered_topics_);
-        description = participant_->create_contentfilteredtopic(cft, topic(name, ops), "step % stride",
-                                                                {std::to_string(stride)}, kStrideFilterClass);
+        description = participant_->create_contentfilteredtopic(cft, t, "step % stride", {std::to_string(stride)},
+                                                                kStrideFilterClass);
         if (!description) throw std::runtime_error("cannot create the content-filtered topic " + cft);
     }
     DataReader* r = subscriber_->create_datareader_with_profile(description, profile);

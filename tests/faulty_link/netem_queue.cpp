@@ -5,10 +5,10 @@
 //   iptables-legacy -t mangle -A OUTPUT -o VETH -p udp -j NFQUEUE --queue-num Q --queue-bypass
 //   gdnav-test-netem --queue Q --delay-ms 5 --jitter-ms 1 --loss-pct 1 --reorder-pct 5 [--seed S]
 //
-// Each packet is dropped with probability loss (draws from gdnav's rnd::Stream, seeded with --seed); of the others, reorder % are released at once (they overtake the
-// held ones, as netem's `reorder`), the rest after delay + uniform(-jitter, +jitter). SIGTERM/SIGINT: every held
-// packet is released, the counts are printed on stderr, exit 0. With --queue-bypass on the rule, packets pass
-// untouched whenever no program listens on the queue.
+// Each packet is dropped with probability loss (draws from gdnav's rnd::Stream, seeded with --seed); of the others,
+// reorder % are released at once (they overtake the held ones, as netem's `reorder`), the rest after
+// delay + uniform(-jitter, +jitter). SIGTERM/SIGINT: every held packet is released, the counts are printed on
+// stderr, exit 0. With --queue-bypass on the rule, packets pass untouched whenever no program listens on the queue.
 #include <arpa/inet.h>
 #include <libnetfilter_queue/libnetfilter_queue.h>
 #include <linux/netfilter.h>

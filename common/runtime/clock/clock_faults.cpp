@@ -14,7 +14,6 @@ namespace gdnav::runtime {
 
 using namespace eprosima::fastdds::dds;
 
-// An essential member killed by a scheduled fault at the step about to start ends the run, as its death would.
 // A fault injected live (gdnav fault): stamped with the first step no member can have reached, validated, sent
 // to every member; the run waits at the current step until all live members have adopted it.
 void Clock::Impl::read_fault_requests(double now) {

@@ -181,6 +181,7 @@ void Clock::Impl::send_clock_status(msg::StatusKind kind, const std::string& mes
     status_writer->write(&status_out);
 }
 
+// An essential member killed by a scheduled fault at the step about to start ends the run, as its death would.
 // Members may be done beyond the kill step (the barrier skips a killed member): the run ends at the kill step.
 bool Clock::Impl::essential_killed() {
     for (const auto& f : schedule.faults())
