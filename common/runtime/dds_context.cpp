@@ -10,6 +10,7 @@
 #include <spdlog/spdlog.h>
 
 #include "runtime/security/security.hpp"
+#include "runtime/status_filter.hpp"
 #include "runtime/stride_filter.hpp"
 
 namespace gdnav::runtime {
@@ -45,6 +46,7 @@ DdsContext::DdsContext(int domain_id, const std::filesystem::path& profile_file,
                                                        : " with security identity '" + identity + "' from " +
                                                              security_dir.string() + " (see the Fast DDS log above)"));
     register_stride_filter(*participant_);  // before any writer: writers filter for strided readers
+    register_status_filter(*participant_);  // and for status readers of one member
     publisher_ = participant_->create_publisher(PUBLISHER_QOS_DEFAULT);
     subscriber_ = participant_->create_subscriber(SUBSCRIBER_QOS_DEFAULT);
     if (!publisher_ || !subscriber_) throw std::runtime_error("cannot create DDS publisher/subscriber");
@@ -87,6 +89,17 @@ DataReader* DdsContext::reader(const std::string& name, const MessageOps& ops, c
     }
     DataReader* r = subscriber_->create_datareader_with_profile(description, profile);
     if (!r) throw std::runtime_error("cannot create DDS reader for " + name + " with profile '" + profile + "'");
+    return r;
+}
+
+DataReader* DdsContext::status_reader(const std::string& name, const MessageOps& ops, const char* profile,
+                                      const std::string& member) {
+    const std::string cft = name + "/of_" + member + "#" + std::to_string(++filtered_topics_);
+    TopicDescription* description =
+        participant_->create_contentfilteredtopic(cft, topic(name, ops), "member = %0", {member}, kStatusFilterClass);
+    if (!description) throw std::runtime_error("cannot create the content-filtered topic " + cft);
+    DataReader* r = subscriber_->create_datareader_with_profile(description, profile);
+    if (!r) throw std::runtime_error("cannot create DDS reader for " + cft + " with profile '" + profile + "'");
     return r;
 }
 

@@ -42,6 +42,9 @@ public:
     // (runtime/stride_filter.hpp).
     eprosima::fastdds::dds::DataReader* reader(const std::string& topic, const MessageOps& ops, const char* profile,
                                                std::uint64_t stride = 1);
+    // A reader of `topic` (ComponentStatus) that gets only the statuses of `member` (runtime/status_filter.hpp).
+    eprosima::fastdds::dds::DataReader* status_reader(const std::string& topic, const MessageOps& ops,
+                                                      const char* profile, const std::string& member);
     [[nodiscard]] eprosima::fastdds::dds::DomainParticipant* participant() const { return participant_; }
 
 private:

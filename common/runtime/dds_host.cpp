@@ -27,7 +27,9 @@ void DdsHost::Impl::setup() {
                                        security::process_identity(hosted));
     tick_reader = dds->reader(topics::kTick, message_ops<msg::Tick>(), kControlReaderProfile);
     control_reader = dds->reader(topics::kRunControl, message_ops<msg::RunControl>(), kLatchedReaderProfile);
-    status_reader = dds->reader(topics::kStatus, message_ops<msg::ComponentStatus>(), kControlReaderProfile);
+    // Only the clock's statuses (its heartbeat): the other members' are for the clock (runtime/status_filter.hpp).
+    status_reader = dds->status_reader(topics::kStatus, message_ops<msg::ComponentStatus>(), kControlReaderProfile,
+                                       kClockName);
     done_writer = dds->writer(topics::kStepDone, message_ops<msg::StepDone>(), kControlWriterProfile);
     status_writer = dds->writer(topics::kStatus, message_ops<msg::ComponentStatus>(), kControlWriterProfile);
     for (Component* c : g.order) {

@@ -109,6 +109,9 @@ class Batch:
 def f(x, digits, signed=False):
     if x is None or not math.isfinite(x):
         return "n/a"
+    if round(x, digits) == 0:
+        x = 0.0  # no "−0.000": a value that rounds to zero is printed unsigned
+        signed = False
     s = f"{x:+,.{digits}f}" if signed else f"{x:,.{digits}f}"
     return s.replace(",", " ").replace("-", "−")
 
