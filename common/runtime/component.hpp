@@ -73,14 +73,17 @@ public:
     // Lag::Previous); at the other steps the input is absent and never waited for. Set before the member is hosted.
     // Over DDS the reader asks the producers' writers to send only those steps (a writer-side content filter,
     // runtime/stride_filter.hpp), so a member that uses one step in N does not receive the others.
-    // set_stride(N) (a member that uses every N-th step) takes the largest divisor of N not above kMaxStride, well
-    // below the writers' history of 72 samples (config/dds), so that a writer sends the reader a sample, and gaps the
-    // skipped ones, before its history wraps (measured: the live bridge at decimation 1000 was no cheaper than at 10).
-    static constexpr std::uint64_t kMaxStride = 32;
+    // set_stride(N) (a member that uses every N-th step) takes the largest divisor of N in [kMinStride, kMaxStride],
+    // or 1 (every sample) when N has none. Why these bounds: with Fast DDS 2.9.1 a writer that filters for a reader
+    // still sends it GAP/HEARTBEAT traffic for the skipped samples, and how much depends on the stride. Measured
+    // (docs/runtime.md, "Which strides pay"): the live bridge's 11 readers added 11.6 datagrams per step unfiltered,
+    // 15.0 at stride 2, 7.1-9.6 at strides 4-10, and 18.9 / 23.6 / 33.7 at strides 16 / 20 / 32.
+    static constexpr std::uint64_t kMinStride = 4;
+    static constexpr std::uint64_t kMaxStride = 10;
     [[nodiscard]] std::uint64_t stride() const { return stride_; }
     void set_stride(std::uint64_t n) {
         stride_ = 1;
-        for (std::uint64_t d = n < kMaxStride ? n : kMaxStride; d > 1; --d)
+        for (std::uint64_t d = n < kMaxStride ? n : kMaxStride; d >= kMinStride; --d)
             if (n % d == 0) {
                 stride_ = d;
                 break;
@@ -102,7 +105,7 @@ protected:
 private:
     Lag lag_;
     bool lost_{false};
-    std::uint64_t stride_{1};  // 1..kMaxStride
+    std::uint64_t stride_{1};  // 1 or kMinStride..kMaxStride
 };
 
 class OutputBase : public PortBase {

@@ -48,16 +48,18 @@ struct Sink final : rt::Component {
 };
 }  // namespace
 
-TEST(StrideFilter, AnInputTakesTheLargestDivisorOfItsDecimationUpToTheLimit) {
+TEST(StrideFilter, AnInputTakesTheLargestDivisorOfItsDecimationWithinTheBounds) {
     rt::register_gdnav_topics();
     Sink owner;
     rt::InputBase in(owner, gdnav::topics::kImu, rt::Lag::Same, *rt::find_topic(gdnav::topics::kImu));
     const std::vector<std::pair<std::uint64_t, std::uint64_t>> cases{
-        {0, 1}, {1, 1}, {2, 2}, {10, 10}, {32, 32}, {64, 32}, {100, 25}, {1000, 25}, {37, 1}, {74, 2}};
+        {0, 1}, {1, 1}, {2, 1}, {3, 1}, {4, 4}, {10, 10}, {12, 6}, {32, 8}, {64, 8}, {100, 10}, {1000, 10},
+        {37, 1}, {74, 1}, {22, 1}};
     for (const auto& [n, want] : cases) {
         in.set_stride(n);
         EXPECT_EQ(in.stride(), want) << "decimation " << n;
         EXPECT_LE(in.stride(), rt::InputBase::kMaxStride);
+        EXPECT_TRUE(in.stride() == 1 || in.stride() >= rt::InputBase::kMinStride);
         if (n > 0) {
             EXPECT_EQ(n % in.stride(), 0u) << "the steps it uses are among those it receives";
         }
