@@ -36,12 +36,15 @@ struct Factory final : eprosima::fastdds::dds::IContentFilterFactory {
                                      const char*, const ParameterSeq& parameters,
                                      eprosima::fastdds::dds::IContentFilter*& filter) override {
         const std::string_view p = parameters.length() == 1 && parameters[0] ? parameters[0] : "";
-        auto* f = filter ? static_cast<F*>(filter) : new F();
+        // A new filter from the parameter; a filter being re-parameterised is replaced only when it parses, so a
+        // bad parameter leaves it as it was.
+        auto* f = new F();
         if (parameters.length() != 1 || !f->set(p)) {
             spdlog::warn("{}: bad parameter '{}'", what, p);
-            if (!filter) delete f;
+            delete f;
             return ReturnCode::RETCODE_BAD_PARAMETER;
         }
+        delete static_cast<F*>(filter);
         filter = f;
         return ReturnCode::RETCODE_OK;
     }

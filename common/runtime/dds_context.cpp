@@ -79,27 +79,29 @@ DataWriter* DdsContext::writer(const std::string& name, const MessageOps& ops, c
 
 DataReader* DdsContext::reader(const std::string& name, const MessageOps& ops, const char* profile,
                                std::uint64_t stride) {
-    Topic* t = topic(name, ops);
-    TopicDescription* description = t;
-    if (stride > 1) {
-        const std::string cft = name + "/every_" + std::to_string(stride) + "_steps#" + std::to_string(++filtered_topics_);
-        description = participant_->create_contentfilteredtopic(cft, t, "step % stride", {std::to_string(stride)},
-                                                                kStrideFilterClass);
-        if (!description) throw std::runtime_error("cannot create the content-filtered topic " + cft);
-    }
-    DataReader* r = subscriber_->create_datareader_with_profile(description, profile);
-    if (!r) throw std::runtime_error("cannot create DDS reader for " + name + " with profile '" + profile + "'");
-    return r;
+    if (stride <= 1) return create_reader(topic(name, ops), name, profile);
+    return filtered_reader(name, ops, profile, "/every_" + std::to_string(stride) + "_steps", "step % stride",
+                           std::to_string(stride), kStrideFilterClass);
 }
 
 DataReader* DdsContext::status_reader(const std::string& name, const MessageOps& ops, const char* profile,
                                       const std::string& member) {
-    const std::string cft = name + "/of_" + member + "#" + std::to_string(++filtered_topics_);
+    return filtered_reader(name, ops, profile, "/of_" + member, "member = %0", member, kStatusFilterClass);
+}
+
+DataReader* DdsContext::filtered_reader(const std::string& name, const MessageOps& ops, const char* profile,
+                                        const std::string& suffix, const char* expression,
+                                        const std::string& parameter, const char* filter_class) {
+    const std::string cft = name + suffix + "#" + std::to_string(++filtered_topics_);
     TopicDescription* description =
-        participant_->create_contentfilteredtopic(cft, topic(name, ops), "member = %0", {member}, kStatusFilterClass);
+        participant_->create_contentfilteredtopic(cft, topic(name, ops), expression, {parameter}, filter_class);
     if (!description) throw std::runtime_error("cannot create the content-filtered topic " + cft);
+    return create_reader(description, cft, profile);
+}
+
+DataReader* DdsContext::create_reader(TopicDescription* description, const std::string& what, const char* profile) {
     DataReader* r = subscriber_->create_datareader_with_profile(description, profile);
-    if (!r) throw std::runtime_error("cannot create DDS reader for " + cft + " with profile '" + profile + "'");
+    if (!r) throw std::runtime_error("cannot create DDS reader for " + what + " with profile '" + profile + "'");
     return r;
 }
 

@@ -49,6 +49,13 @@ public:
 
 private:
     eprosima::fastdds::dds::Topic* topic(const std::string& name, const MessageOps& ops);
+    // A reader of a ContentFilteredTopic of `name` (named name + suffix + a counter) with one filter parameter.
+    eprosima::fastdds::dds::DataReader* filtered_reader(const std::string& name, const MessageOps& ops,
+                                                        const char* profile, const std::string& suffix,
+                                                        const char* expression, const std::string& parameter,
+                                                        const char* filter_class);
+    eprosima::fastdds::dds::DataReader* create_reader(eprosima::fastdds::dds::TopicDescription* description,
+                                                      const std::string& what, const char* profile);
     eprosima::fastdds::dds::DomainParticipant* participant_{nullptr};
     eprosima::fastdds::dds::Publisher* publisher_{nullptr};
     eprosima::fastdds::dds::Subscriber* subscriber_{nullptr};

@@ -19,8 +19,9 @@
 // are counted as dropping the steps skipped meanwhile), the topics cost nothing (the viewer channels,
 // when on, are still computed every viewer_decimation steps, so that their ENU origin is the recording's). Log time = k * dt_ns, as in
 // the recording. At the end the per-client sent/dropped counts are logged and written to <out>/<name>_stats.yaml.
-// Its inputs read only the steps it streams (InputBase::stride: the topics' decimation, the viewer's, or both's
-// greatest common divisor for an input both use), so over DDS the producers send it one sample in N.
+// Its inputs have a stride (InputBase::set_stride of the topics' decimation, the viewer's, or both's greatest common
+// divisor for an input both use; the stride is a divisor of that, from 4 to 10, or 1), so over DDS the producers
+// send it one sample per stride, which includes every step it streams.
 //
 // Adding channels: implement a ChannelSource (channel_source.hpp: channels() and encode(), as TopicChannels and
 // ViewerSource do) and append it to `sources_` in configure(); the bridge gives it the next channel ids, advertises
