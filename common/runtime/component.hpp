@@ -153,6 +153,13 @@ public:
     virtual void step(const StepContext& ctx) = 0;
     // Called once after the last step (flush files, final metrics). Default: nothing.
     virtual void finish(bool /*completed*/) {}
+    // An observer (e.g. the live bridge) only looks at the run: it has no outputs and must never hold it. In the
+    // direct layout nothing changes; a DDS host keeps it out of the clock's barrier (no StepDone; its status says
+    // free_running, which for a member without outputs means exactly that, docs/protocol.md), reads its inputs with
+    // best-effort readers (no acknowledgements, no resends), and skips a step whose sample was lost or arrived too
+    // late for its inbox, counting it. Its inputs are still the samples of step k, so what it sees of step k is
+    // what every other member saw.
+    [[nodiscard]] virtual bool observer() const { return false; }
     // Mode changes a component wants published on ComponentStatus (e.g. "GNSS lost"); the executor drains it.
     std::vector<std::string>& pending_status() { return status_; }
 

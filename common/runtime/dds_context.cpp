@@ -5,6 +5,8 @@
 
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
 #include <fastdds/dds/log/Log.hpp>
+#include <fastdds/dds/subscriber/Subscriber.hpp>
+#include <fastdds/dds/subscriber/qos/DataReaderQos.hpp>
 #include <fastdds/dds/topic/ContentFilteredTopic.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
 #include <spdlog/spdlog.h>
@@ -78,10 +80,10 @@ DataWriter* DdsContext::writer(const std::string& name, const MessageOps& ops, c
 }
 
 DataReader* DdsContext::reader(const std::string& name, const MessageOps& ops, const char* profile,
-                               std::uint64_t stride) {
-    if (stride <= 1) return create_reader(topic(name, ops), name, profile);
+                               std::uint64_t stride, bool best_effort) {
+    if (stride <= 1) return create_reader(topic(name, ops), name, profile, best_effort);
     return filtered_reader(name, ops, profile, "/every_" + std::to_string(stride) + "_steps", "step % stride",
-                           std::to_string(stride), kStrideFilterClass);
+                           std::to_string(stride), kStrideFilterClass, best_effort);
 }
 
 DataReader* DdsContext::status_reader(const std::string& name, const MessageOps& ops, const char* profile,
@@ -91,17 +93,30 @@ DataReader* DdsContext::status_reader(const std::string& name, const MessageOps&
 
 DataReader* DdsContext::filtered_reader(const std::string& name, const MessageOps& ops, const char* profile,
                                         const std::string& suffix, const char* expression,
-                                        const std::string& parameter, const char* filter_class) {
+                                        const std::string& parameter, const char* filter_class,
+                                        bool best_effort) {
     const std::string cft = name + suffix + "#" + std::to_string(++filtered_topics_);
     TopicDescription* description =
         participant_->create_contentfilteredtopic(cft, topic(name, ops), expression, {parameter}, filter_class);
     if (!description) throw std::runtime_error("cannot create the content-filtered topic " + cft);
-    return create_reader(description, cft, profile);
+    return create_reader(description, cft, profile, best_effort);
 }
 
-DataReader* DdsContext::create_reader(TopicDescription* description, const std::string& what, const char* profile) {
-    DataReader* r = subscriber_->create_datareader_with_profile(description, profile);
-    if (!r) throw std::runtime_error("cannot create DDS reader for " + what + " with profile '" + profile + "'");
+DataReader* DdsContext::create_reader(TopicDescription* description, const std::string& what, const char* profile,
+                                      bool best_effort) {
+    DataReader* r = nullptr;
+    if (!best_effort) {
+        r = subscriber_->create_datareader_with_profile(description, profile);
+    } else {
+        DataReaderQos q;
+        if (subscriber_->get_datareader_qos_from_profile(profile, q) == ReturnCode_t::RETCODE_OK) {
+            q.reliability().kind = BEST_EFFORT_RELIABILITY_QOS;
+            r = subscriber_->create_datareader(description, q);
+        }
+    }
+    if (!r)
+        throw std::runtime_error("cannot create DDS " + std::string(best_effort ? "best-effort " : "") + "reader for " +
+                                 what + " with profile '" + profile + "'");
     return r;
 }
 

@@ -39,9 +39,10 @@ public:
 
     eprosima::fastdds::dds::DataWriter* writer(const std::string& topic, const MessageOps& ops, const char* profile);
     // stride > 1: the reader gets only the samples of steps k % stride == 0, filtered by the writers where they can
-    // (runtime/stride_filter.hpp).
+    // (runtime/stride_filter.hpp). best_effort: the profile's QoS with BEST_EFFORT reliability (an observer's
+    // inputs, Component::observer(): no acknowledgements or resends, a lost sample stays lost).
     eprosima::fastdds::dds::DataReader* reader(const std::string& topic, const MessageOps& ops, const char* profile,
-                                               std::uint64_t stride = 1);
+                                               std::uint64_t stride = 1, bool best_effort = false);
     // A reader of `topic` (ComponentStatus) that gets only the statuses of `member` (runtime/status_filter.hpp).
     eprosima::fastdds::dds::DataReader* status_reader(const std::string& topic, const MessageOps& ops,
                                                       const char* profile, const std::string& member);
@@ -53,9 +54,10 @@ private:
     eprosima::fastdds::dds::DataReader* filtered_reader(const std::string& name, const MessageOps& ops,
                                                         const char* profile, const std::string& suffix,
                                                         const char* expression, const std::string& parameter,
-                                                        const char* filter_class);
+                                                        const char* filter_class, bool best_effort = false);
     eprosima::fastdds::dds::DataReader* create_reader(eprosima::fastdds::dds::TopicDescription* description,
-                                                      const std::string& what, const char* profile);
+                                                      const std::string& what, const char* profile,
+                                                      bool best_effort = false);
     eprosima::fastdds::dds::DomainParticipant* participant_{nullptr};
     eprosima::fastdds::dds::Publisher* publisher_{nullptr};
     eprosima::fastdds::dds::Subscriber* subscriber_{nullptr};

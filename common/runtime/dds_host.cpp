@@ -36,11 +36,12 @@ void DdsHost::Impl::setup() {
         Local l;
         l.comp = c;
         l.awaiting_rejoin = opt.rejoin;
+        l.observer = c->observer() && c->outputs().empty();
         for (InputBase* in : c->inputs()) {
             auto ch = std::make_unique<Channel>();
             ch->port = in;
             ch->ops = &in->ops();
-            ch->reader = dds->reader(in->topic(), in->ops(), kDataReaderProfile, in->stride());
+            ch->reader = dds->reader(in->topic(), in->ops(), kDataReaderProfile, in->stride(), l.observer);
             ch->scratch = ch->ops->create();
             ch->latest = ch->ops->create();
             for (auto& s : ch->slot) s = ch->ops->create();
@@ -140,6 +141,9 @@ int DdsHost::Impl::loop() {
         lock.unlock();
         pump();
     }
+    // STOP came after every barrier member's last StepDone, so the samples of the last steps are here: an observer,
+    // which nobody waited for, computes what it still can before it finishes.
+    if (code == kExitOk) process_data(steady_now_s());
     closing = true;
     lock.unlock();
     for (DataReader* r : data_readers()) r->set_listener(nullptr);
@@ -149,6 +153,7 @@ int DdsHost::Impl::loop() {
         if (!l.killed) l.comp->finish(code == kExitOk);
     }
     report_lateness();
+    report_observers();
     return code;
 }
 

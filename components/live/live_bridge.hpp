@@ -13,7 +13,7 @@
 //   max_pending_kib  per client: bytes not yet taken by its socket beyond which a frame is dropped for it
 //   queue_steps      frames waiting for the server thread beyond which a frame is dropped for everybody
 //
-// A lockstep member that never makes the run wait: the server starts at the first step; a streamed step
+// An observer member (runtime::Component::observer) that never makes the run wait: the server starts at the first step; a streamed step
 // serialises the subscribed channels into one frame and hands it to the server thread (foxglove_ws::Server:
 // bounded queue, per-client drop policy); with no subscribed client, or only stalled ones (foxglove_ws::Server: they
 // are counted as dropping the steps skipped meanwhile), the topics cost nothing (the viewer channels,
@@ -44,6 +44,9 @@ public:
     void configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream& stream) override;
     void step(const runtime::StepContext& ctx) override;
     void finish(bool completed) override;
+    // Never holds the run: over DDS it is out of the barrier and reads with best-effort readers (a sample lost on
+    // the way is a step not streamed, counted by the host; docs/viewing.md "Cost").
+    [[nodiscard]] bool observer() const override { return true; }
 
 private:
     void start_server();

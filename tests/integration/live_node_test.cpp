@@ -39,20 +39,6 @@ namespace {
 
 constexpr std::uint64_t kStepNs = 10'000'000;  // scenario #2: dt = 0.01 s
 
-// A port that was free a moment ago (bound to 0, read back, closed).
-int free_port() {
-    const int fd = socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in a{};
-    a.sin_family = AF_INET;
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    a.sin_port = 0;
-    if (bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof(a)) != 0) return -1;
-    socklen_t n = sizeof(a);
-    getsockname(fd, reinterpret_cast<sockaddr*>(&a), &n);
-    close(fd);
-    return ntohs(a.sin_port);
-}
-
 std::string client_script() { return std::string(GDNAV_LIVE_NODE_DIR) + "/live_client.mjs"; }
 
 // The value of field f of a decoded sample as the client writes it (JavaScript's String()).
@@ -125,7 +111,8 @@ TEST(LiveNode, ClientDuringDistributedRunDecodesTheRecordedValues) {
         EXPECT_EQ(c.at("schema"), std::string(gdnav::runtime::topic_schema_idl(topic))) << topic;
     }
     for (const auto& t : gdnav::runtime::known_topics()) EXPECT_TRUE(topics.count(t)) << "not advertised: " << t;
-    for (const char* v : {"/viewer/true/fix", "/viewer/est/fix", "/viewer/true/tf", "/viewer/est/tf", "/viewer/nav_errors"})
+    for (const char* v : {"/viewer/true/fix", "/viewer/est/fix", "/viewer/true/tf", "/viewer/est/tf", "/viewer/nav_errors",
+                          "/viewer/true/pose", "/viewer/est/pose"})
         EXPECT_TRUE(topics.count(v)) << "not advertised: " << v;
 
     // Every data topic: messages at even steps only (decimation 2), log time = step * dt_ns, and at the sampled

@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <arpa/inet.h>
 #include <fcntl.h>
+#include <netinet/in.h>
 #include <signal.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -17,6 +20,20 @@
 #include <yaml-cpp/yaml.h>
 
 namespace gdnav::testing {
+
+int free_port() {
+    const int fd = socket(AF_INET, SOCK_STREAM, 0);
+    if (fd < 0) return -1;
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    a.sin_port = 0;
+    socklen_t n = sizeof(a);
+    const bool ok = bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof(a)) == 0 &&
+                    getsockname(fd, reinterpret_cast<sockaddr*>(&a), &n) == 0;
+    close(fd);
+    return ok ? ntohs(a.sin_port) : -1;
+}
 
 namespace fs = std::filesystem;
 

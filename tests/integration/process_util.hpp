@@ -43,6 +43,8 @@ std::map<std::string, std::string> read_digests(const std::filesystem::path& out
 int expect_consistent_markdown_tables(const std::string& md);
 // A fresh temporary directory for one test.
 std::filesystem::path temp_dir(const std::string& tag);
+// A TCP port on 127.0.0.1 that was free a moment ago (bound to 0, read back, closed); -1 if none.
+int free_port();
 // Path of gdnav-testchain and of the chain scenario.
 std::string testchain_exe();
 std::string chain_scenario();

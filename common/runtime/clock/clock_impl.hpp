@@ -40,6 +40,8 @@ struct Clock::Impl {
         std::uint64_t dead_at_step{0};
         std::string dead_reason;
         std::uint32_t faults_version{0};  // fault schedule the member has adopted
+        // Not in the barrier and writes nothing (e.g. the live bridge): it cannot change the run's outputs.
+        [[nodiscard]] bool observer() const { return free && outputs.empty(); }
     };
 
     const RunConfig& rc;

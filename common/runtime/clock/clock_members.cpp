@@ -61,7 +61,9 @@ void Clock::Impl::read_status(double now) {
                              m.inputs.empty() ? "none" : m.inputs, m.outputs.empty() ? "none" : m.outputs);
             else
                 spdlog::debug("member '{}' present on {}", name, m.host);
-            if (m.free && m.expected)
+            if (m.observer() && m.expected)
+                spdlog::debug("member '{}' is an observer (no outputs; not in the barrier)", name);
+            else if (m.free && m.expected)
                 spdlog::info("member '{}' is free-running (not in the barrier; run not reproducible)", name);
         }
         if (status_in.kind() == msg::STATUS_READY) m.ready = true;

@@ -39,9 +39,10 @@ void Clock::Impl::write_summary(bool completed, double now) {
     f << "rejoined_members: [";
     for (std::size_t i = 0; i < rejoined.size(); ++i) f << (i ? ", " : "") << rejoined[i];
     f << "]\n";
-    // A free-running member, or a member declared dead at a wall-clock moment, makes the outputs timing-dependent.
+    // A free-running member that writes, or a member declared dead at a wall-clock moment, makes the outputs
+    // timing-dependent; an observer (free, no outputs) does not.
     bool timing = !rejoined.empty();
-    for (Member* m : table) timing = timing || m->free || m->dead;
+    for (Member* m : table) timing = timing || (m->free && !m->observer()) || m->dead;
     f << "reproducible: " << (timing ? "false" : "true") << "\n";
 }
 

@@ -21,7 +21,7 @@ void DdsHost::Impl::send_status(const Local& l, msg::StatusKind kind, const std:
     status_out.kind(kind);
     status_out.inputs(join_topics(input_topics(*l.comp)));
     status_out.outputs(join_topics(output_topics(*l.comp)));
-    status_out.free_running(opt.free_running);
+    status_out.free_running(!in_barrier(l));  // an observer: no outputs and not in the barrier (docs/protocol.md)
     status_out.message(message);
     status_out.protocol_version(msg::LOCKSTEP_PROTOCOL_VERSION);
     status_out.faults_version(faults_version);

@@ -118,7 +118,7 @@ bool DdsHost::Impl::apply_member_faults(Local& l, std::uint64_t k) {
         spdlog::warn("[{}] step {} t={:.2f} s: killed by a scheduled fault", name, k, ri.time_of(k));
         send_status(l, msg::STATUS_MODE, "killed by a scheduled fault");
         // The clock stops waiting for it from step k on: report the steps done before (done_every cadence).
-        if (k > 0 && !opt.free_running && k % done_every != 0) send_done(l, k - 1);
+        if (k > 0 && in_barrier(l) && k % done_every != 0) send_done(l, k - 1);
     }
     l.next_step = std::min(schedule.alive_again(name, k), ri.steps);
     return false;

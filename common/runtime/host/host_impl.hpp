@@ -136,7 +136,7 @@ struct DdsHost::Impl {
 
     void read_status(double now);
 
-    void read_data(const Local& l, Channel& ch);
+    void read_data(Local& l, Channel& ch);
 
     static void warn_too_far(const Local& l, const Channel& ch, std::uint64_t s);
 
@@ -146,6 +146,12 @@ struct DdsHost::Impl {
     bool inputs_ready(const Local& l, std::uint64_t k);
 
     void send_done(const Local& l, std::uint64_t k);
+
+    // Whether the clock waits for member `l` (it reports StepDone): not for a free-running host or an observer.
+    [[nodiscard]] bool in_barrier(const Local& l) const { return !opt.free_running && !l.observer; }
+
+    // Observers: the steps they skipped (log lines at the end).
+    void report_observers();
 
     // A restart: member `l` is created anew at step k (the old object goes, with its state).
     void restart(Local& l, std::uint64_t k);

@@ -30,6 +30,7 @@ bool hand_over(const Route& r, const Local& consumer, const void* sample, std::u
         return true;
     }
     if (!ch.port->on_stride(s)) return true;  // a step the reader does not read (as the DDS stride filter)
+    ch.saw(s);
     const long i = inbox_index(ch, consumer.next_step, s);
     if (i == kOlder) return true;  // no step of the reader needs it (as with a DDS sample)
     if (i == kTooFar) return false;
@@ -38,6 +39,20 @@ bool hand_over(const Route& r, const Local& consumer, const void* sample, std::u
     ch.slot_step[u] = s;
     ch.full[u] = true;
     return true;
+}
+
+bool step_missed(const Local& l, std::uint64_t k) {
+    for (const Channel* ch : l.inputs) {
+        if (ch->lost || ch->free) continue;
+        const auto lag = static_cast<std::uint64_t>(ch->port->lag());
+        if (k < lag) continue;
+        const std::uint64_t need = k - lag;
+        if (!ch->port->on_stride(need) || need < ch->lost_until) continue;
+        const std::size_t i = need % kInboxRing;
+        const bool have = ch->full[i] && ch->slot_step[i] == need;
+        if (!have && ch->seen && ch->newest > need) return true;
+    }
+    return false;
 }
 
 Output make_output(OutputBase* port, eprosima::fastdds::dds::DataWriter* writer) {

@@ -39,6 +39,12 @@ struct Channel {
     std::unique_ptr<faults::InputFaults> faults;  // scheduled faults on this input (nullptr: none)
     std::uint64_t lost_until{0};  // its producer rejoined: samples of steps below this one are lost
     bool revived{false};
+    bool seen{false};             // a sample has arrived (any step)
+    std::uint64_t newest{0};      // the newest step of the samples arrived (an observer's lost-step test)
+    void saw(std::uint64_t s) {
+        if (!seen || s > newest) newest = s;
+        seen = true;
+    }
 };
 
 // Where a local member's output goes inside the process: the inboxes of the local members that read its topic.
@@ -75,7 +81,13 @@ struct Local {
     std::uint64_t restarted_at{UINT64_MAX};
     std::vector<Channel*> inputs;
     std::vector<Output> outputs;
+    bool observer{false};          // Component::observer(): not in the barrier, best-effort inputs, skips lost steps
+    std::uint64_t skipped{0};      // observer: steps not computed (a sample lost, or too late for the inbox)
 };
+
+// Observer `l` cannot compute step k any more: an input it reads at k has no sample of that step while a newer one
+// of the same input has arrived (one writer's samples arrive in order, so the missing one was lost).
+bool step_missed(const Local& l, std::uint64_t k);
 
 // Ring index for a sample of step s in `ch`, read by a member whose next step is next_step: kOlder when no step of
 // the member needs it any more, kTooFar when it is beyond the ring.

@@ -10,7 +10,7 @@ namespace gdnav::runtime {
 
 using namespace eprosima::fastdds::dds;
 
-void DdsHost::Impl::read_data(const Local& l, Channel& ch) {
+void DdsHost::Impl::read_data(Local& l, Channel& ch) {
     SampleInfo info;
     while (ch.reader->take_next_sample(ch.scratch, &info) == ReturnCode_t::RETCODE_OK) {
         if (!info.valid_data || ch.ops->run_of(ch.scratch) != ri.run_index) continue;
@@ -20,8 +20,18 @@ void DdsHost::Impl::read_data(const Local& l, Channel& ch) {
             continue;
         }
         const std::uint64_t s = ch.ops->step_of(ch.scratch);
-        const long at = host::inbox_index(ch, l.next_step, s);
+        ch.saw(s);
+        long at = host::inbox_index(ch, l.next_step, s);
         if (at == host::kOlder) continue;
+        if (at == host::kTooFar && l.observer) {
+            // An observer that fell behind (paused, or a slow machine): it gives up the steps before the ones its
+            // inbox can hold with this sample, rather than dropping the samples it can still use.
+            const auto lag = static_cast<std::uint64_t>(ch.port->lag());
+            const std::uint64_t first = s + lag + 1 - kInboxRing;
+            l.skipped += first - l.next_step;
+            l.next_step = first;
+            at = host::inbox_index(ch, l.next_step, s);
+        }
         if (at == host::kTooFar) {
             warn_too_far(l, ch, s);
             continue;
@@ -124,7 +134,14 @@ bool DdsHost::Impl::advance() {
                 continue;
             }
             for (Channel* ch : l.inputs) read_data(l, *ch);
-            if (!inputs_ready(l, k)) break;
+            if (l.next_step != k) continue;  // an observer that fell behind jumped ahead
+            if (!inputs_ready(l, k)) {
+                if (!l.observer || !host::step_missed(l, k)) break;
+                ++l.skipped;  // an observer never waits for a lost sample
+                ++l.next_step;
+                any = true;
+                continue;
+            }
             record_lateness(l, k);
             const StepContext ctx{k, ri.time_of(k), ri.dt_s, k + 1 == ri.steps};
             l.comp->step(ctx);
@@ -138,11 +155,25 @@ bool DdsHost::Impl::advance() {
             }
             l.comp->pending_status().clear();
             ++l.next_step;
-            if (!opt.free_running && ((k + 1) % done_every == 0 || k + 1 == ri.steps)) send_done(l, k);
+            if (in_barrier(l) && ((k + 1) % done_every == 0 || k + 1 == ri.steps)) send_done(l, k);
             any = true;
         }
     }
     return any;
+}
+
+void DdsHost::Impl::report_observers() {
+    for (const auto& l : locals) {
+        if (!l.observer) continue;
+        const std::uint64_t computed = l.next_step - l.skipped;
+        const std::uint64_t unreached = ri.steps > l.next_step ? ri.steps - l.next_step : 0;  // the run ended first
+        const std::string tail = unreached ? fmt::format(", {} not reached before the end", unreached) : "";
+        if (l.skipped == 0 && unreached == 0)
+            spdlog::info("observer '{}': computed {} of {} steps, none skipped", l.comp->name(), computed, ri.steps);
+        else
+            spdlog::warn("observer '{}': computed {} of {} steps, skipped {}{} (samples lost on the best-effort "
+                         "readers, or it fell behind)", l.comp->name(), computed, ri.steps, l.skipped, tail);
+    }
 }
 
 // Free-running inputs (hardware-in-the-loop): summary lines and <out>/lateness/<member>.yaml.
