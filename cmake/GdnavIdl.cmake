@@ -1,17 +1,32 @@
-# gdnav_idl_library(<target> <idl files...>)
+# gdnav_idl_library(<target> <idl files...> [GEN_REPLACE <text> <replacement>])
 # Runs fastddsgen at build time (never committed) into ${CMAKE_CURRENT_BINARY_DIR}/<target>_gen and builds a
 # static library of the generated types. `-replace` is needed: without it fastddsgen silently keeps stale files.
+# GEN_REPLACE: fastddsgen reads a copy of each file with <text> replaced (e.g. a member name fastddsgen refuses),
+# while the IDL text compiled in for recordings (idl_text::<base>()) stays the file as written. Only for changes that
+# leave the CDR encoding alone (member names are not on the wire).
 function(gdnav_idl_library target)
+  cmake_parse_arguments(ARG "" "" "GEN_REPLACE" ${ARGN})
   set(outdir ${CMAKE_CURRENT_BINARY_DIR}/${target}_gen)
   file(MAKE_DIRECTORY ${outdir})
   set(sources)
-  foreach(idl ${ARGN})
+  foreach(idl ${ARG_UNPARSED_ARGUMENTS})
     get_filename_component(abs ${idl} ABSOLUTE)
     get_filename_component(base ${idl} NAME_WE)
+    get_filename_component(name ${idl} NAME)
+    set(gen_input ${abs})
+    if(ARG_GEN_REPLACE)
+      file(READ ${abs} _text)
+      list(GET ARG_GEN_REPLACE 0 _from)
+      list(GET ARG_GEN_REPLACE 1 _to)
+      string(REPLACE "${_from}" "${_to}" _text "${_text}")
+      set(gen_input ${outdir}/fastddsgen_input/${name})
+      file(WRITE ${gen_input}.tmp "${_text}")
+      configure_file(${gen_input}.tmp ${gen_input} COPYONLY)
+    endif()
     set(gen ${outdir}/${base}.cxx ${outdir}/${base}.h ${outdir}/${base}PubSubTypes.cxx ${outdir}/${base}PubSubTypes.h)
     add_custom_command(
       OUTPUT ${gen}
-      COMMAND ${FASTDDSGEN} -replace -d ${outdir} ${abs}
+      COMMAND ${FASTDDSGEN} -replace -d ${outdir} ${gen_input}
       DEPENDS ${abs}
       COMMENT "fastddsgen ${base}.idl"
       VERBATIM)

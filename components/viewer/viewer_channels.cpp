@@ -19,7 +19,7 @@ constexpr const char* kOmgIdl = "omgidl";
 constexpr const char* kCdr = "cdr";
 constexpr const char* kWorldFrame = "enu";
 
-enum Index : std::size_t { kTrueFix, kEstFix, kTrueTf, kEstTf, kErrors };
+enum Index : std::size_t { kTrueFix, kEstFix, kTrueTf, kEstTf, kErrors, kTruePose, kEstPose, kCount };
 
 template <class T>
 void encode_message(std::size_t channel, const T& message, std::vector<ViewerMessage>& out) {
@@ -48,21 +48,35 @@ foxglove::LocationFix location_fix(const foxglove::Time& stamp, const char* fram
     return f;
 }
 
+// The body frame's pose in `enu`: ENU offset from the origin, and the FLU body axes' rotation (viewer_math.hpp).
+void set_pose(foxglove::Vector3& position, foxglove::Quaternion& orientation, const math::Vec3& enu_m,
+              const math::Quat& q_nb) {
+    position.x(enu_m.x());
+    position.y(enu_m.y());
+    position.z(enu_m.z());
+    const math::Quat q = quat_enu_flu(q_nb);
+    orientation.x(q.x());
+    orientation.y(q.y());
+    orientation.z(q.z());
+    orientation.w(q.w());
+}
+
 foxglove::FrameTransform frame_transform(const foxglove::Time& stamp, const char* child, const math::Vec3& enu_m,
                                          const math::Quat& q_nb) {
     foxglove::FrameTransform tf;
     tf.timestamp(stamp);
     tf.parent_frame_id(kWorldFrame);
     tf.child_frame_id(child);
-    tf.translation().x(enu_m.x());
-    tf.translation().y(enu_m.y());
-    tf.translation().z(enu_m.z());
-    const math::Quat q = quat_enu_flu(q_nb);
-    tf.rotation().x(q.x());
-    tf.rotation().y(q.y());
-    tf.rotation().z(q.z());
-    tf.rotation().w(q.w());
+    set_pose(tf.translation(), tf.rotation(), enu_m, q_nb);
     return tf;
+}
+
+foxglove::PoseInFrame pose_in_frame(const foxglove::Time& stamp, const math::Vec3& enu_m, const math::Quat& q_nb) {
+    foxglove::PoseInFrame p;
+    p.timestamp(stamp);
+    p.frame_id(kWorldFrame);
+    set_pose(p.pose_().position(), p.pose_().orientation(), enu_m, q_nb);
+    return p;
 }
 
 }  // namespace
@@ -71,12 +85,14 @@ const std::vector<ViewerChannel>& viewer_channels() {
     static const std::vector<ViewerChannel> channels = [] {
         const std::string fox(idl_text::foxglove_schemas());
         const std::string own(idl_text::gdnav_viewer());
-        std::vector<ViewerChannel> c(5);
+        std::vector<ViewerChannel> c(kCount);
         c[kTrueFix] = {"/viewer/true/fix", "foxglove::LocationFix", kOmgIdl, fox, kCdr};
         c[kEstFix] = {"/viewer/est/fix", "foxglove::LocationFix", kOmgIdl, fox, kCdr};
         c[kTrueTf] = {"/viewer/true/tf", "foxglove::FrameTransform", kOmgIdl, fox, kCdr};
         c[kEstTf] = {"/viewer/est/tf", "foxglove::FrameTransform", kOmgIdl, fox, kCdr};
         c[kErrors] = {"/viewer/nav_errors", "gdnav::viewer::NavErrors", kOmgIdl, own, kCdr};
+        c[kTruePose] = {"/viewer/true/pose", "foxglove::PoseInFrame", kOmgIdl, fox, kCdr};
+        c[kEstPose] = {"/viewer/est/pose", "foxglove::PoseInFrame", kOmgIdl, fox, kCdr};
         return c;
     }();
     return channels;
@@ -126,17 +142,21 @@ void ViewerChannels::encode(const runtime::StepContext& ctx, std::uint64_t log_t
     if (ctx.k % options_.decimation != 0) return;
     const foxglove::Time stamp = stamp_of(log_time_ns);
     const earth::Geodetic true_pos{t.lon_rad(), t.lat_rad(), t.h_m()};
+    const math::Vec3 true_enu = enu_offset_m(origin_, true_pos);
+    const math::Quat true_q = runtime::to_quat(t.q_nb());
     encode_message(kTrueFix, location_fix(stamp, "body_true", t.lat_rad(), t.lon_rad(), t.h_m()), out);
-    encode_message(kTrueTf, frame_transform(stamp, "body_true", enu_offset_m(origin_, true_pos), runtime::to_quat(t.q_nb())),
-                   out);
+    encode_message(kTrueTf, frame_transform(stamp, "body_true", true_enu, true_q), out);
+    encode_message(kTruePose, pose_in_frame(stamp, true_enu, true_q), out);
     if (!att_->available() || !pos_->available() || !air_->available()) return;
     const auto& q = *static_cast<const msg::AttitudeEstimate*>(att_->data_ptr());
     const auto& p = *static_cast<const msg::PositionEstimate*>(pos_->data_ptr());
     const auto& a = *static_cast<const msg::AirDataEstimate*>(air_->data_ptr());
     const earth::Geodetic est_pos{p.lon_rad(), p.lat_rad(), p.h_m()};
     encode_message(kEstFix, location_fix(stamp, "body_est", p.lat_rad(), p.lon_rad(), p.h_m()), out);
-    encode_message(kEstTf, frame_transform(stamp, "body_est", enu_offset_m(origin_, est_pos), runtime::to_quat(q.q_nb())),
-                   out);
+    const math::Vec3 est_enu = enu_offset_m(origin_, est_pos);
+    const math::Quat est_q = runtime::to_quat(q.q_nb());
+    encode_message(kEstTf, frame_transform(stamp, "body_est", est_enu, est_q), out);
+    encode_message(kEstPose, pose_in_frame(stamp, est_enu, est_q), out);
     const NavErrorValues v =
         nav_error_values(nav_recorder::estimate_state(a, q, p), nav_recorder::truth_state(t), radii0_);
     NavErrors e;

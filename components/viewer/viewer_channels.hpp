@@ -9,6 +9,8 @@
 //   /viewer/true/tf      foxglove::FrameTransform               enu -> body_true: Truth position and attitude
 //   /viewer/est/tf       foxglove::FrameTransform               enu -> body_est: estimated position and attitude
 //   /viewer/nav_errors   gdnav::viewer::NavErrors               attitude/horizontal/altitude/speed errors, gnss_denied
+//   /viewer/true/pose    foxglove::PoseInFrame                  in `enu`: Truth position and attitude (the tf's pose)
+//   /viewer/est/pose     foxglove::PoseInFrame                  in `enu`: estimated position and attitude
 //
 // Frames (3D panel, z up): `enu` = East-North-Up tangent plane at the first true position the owner saw (its origin),
 // body frames x forward, y left, z up (viewer_math.hpp). Timestamps (foxglove::Time) = the log time the owner gives

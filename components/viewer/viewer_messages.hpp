@@ -8,4 +8,5 @@
 
 GDNAV_DECLARE_MESSAGE(foxglove::LocationFix, foxglove::LocationFixPubSubType)
 GDNAV_DECLARE_MESSAGE(foxglove::FrameTransform, foxglove::FrameTransformPubSubType)
+GDNAV_DECLARE_MESSAGE(foxglove::PoseInFrame, foxglove::PoseInFramePubSubType)
 GDNAV_DECLARE_MESSAGE(gdnav::viewer::NavErrors, gdnav::viewer::NavErrorsPubSubType)

@@ -154,7 +154,7 @@ TEST(McapNode, ViewerChannelsDecodeAndMatchTruthEstimatesAndRunH5) {
     const gdnav::recorder::Recording rec = gdnav::recorder::read_recording(out / "record");
     ASSERT_TRUE(rec.complete) << rec.problem;
     EXPECT_EQ(rec.topics.size(), 3u);
-    EXPECT_EQ(rec.derived_channels.size(), 5u);
+    EXPECT_EQ(rec.derived_channels.size(), 7u);
     const double t0 = std::stod(rec.run_metadata.at("t0_s"));
     const double dt = std::stod(rec.run_metadata.at("dt_s"));
 

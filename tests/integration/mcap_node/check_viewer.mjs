@@ -7,6 +7,7 @@
 //   LocationFix     latitude/longitude = lat_rad/lon_rad * 180/pi, altitude = h_m, timestamp = log time
 //   FrameTransform  rotation: the body's forward and up axes equal Truth's/the estimate's q_nb axes in ENU;
 //                   the first true translation is 0; |est - true| horizontally ~ the horizontal error
+//   PoseInFrame     frame_id enu, position and orientation = the FrameTransform's of the same step (same body)
 //   NavErrors       = run.h5 /error at the same step (rot_rad in degrees, hor_m, h_m, vn/ve, ...), gs_err from the
 //                   velocities, gnss_denied = PositionEstimate.gnss_denied (and the run crosses the GNSS loss)
 // Exit 0 when everything matches, 1 with the mismatches.
@@ -36,6 +37,8 @@ const viewerSchemas = {
   "/viewer/true/tf": "foxglove::FrameTransform",
   "/viewer/est/tf": "foxglove::FrameTransform",
   "/viewer/nav_errors": "gdnav::viewer::NavErrors",
+  "/viewer/true/pose": "foxglove::PoseInFrame",
+  "/viewer/est/pose": "foxglove::PoseInFrame",
 };
 const rawTopics = ["gdnav/Truth", "gdnav/PositionEstimate", "gdnav/AttitudeEstimate"];
 const decoders = new Map();
@@ -128,11 +131,32 @@ function checkTf(topic, src, child) {
   return n;
 }
 
+function checkPose(topic, tfTopic) {
+  let n = 0;
+  for (const [step, entry] of byTopic.get(topic) ?? []) {
+    const p = entry.msg, tf = at(tfTopic, step);
+    checkTimestamp(topic, step, entry);
+    if (!tf) {
+      problem(`${topic} step ${step}: no ${tfTopic} message`);
+      continue;
+    }
+    if (p.frame_id !== "enu") problem(`${topic}: frame_id '${p.frame_id}'`);
+    for (const k of ["x", "y", "z"])
+      if (p.pose.position[k] !== tf.translation[k]) problem(`${topic} step ${step}: position.${k} ${p.pose.position[k]}, tf ${tf.translation[k]}`);
+    for (const k of ["x", "y", "z", "w"])
+      if (p.pose.orientation[k] !== tf.rotation[k]) problem(`${topic} step ${step}: orientation.${k} ${p.pose.orientation[k]}, tf ${tf.rotation[k]}`);
+    ++n;
+  }
+  return n;
+}
+
 const counts = {};
 counts.true_fix = checkFix("/viewer/true/fix", "gdnav/Truth", "body_true");
 counts.est_fix = checkFix("/viewer/est/fix", "gdnav/PositionEstimate", "body_est");
 counts.true_tf = checkTf("/viewer/true/tf", "gdnav/Truth", "body_true");
 counts.est_tf = checkTf("/viewer/est/tf", "gdnav/AttitudeEstimate", "body_est");
+counts.true_pose = checkPose("/viewer/true/pose", "/viewer/true/tf");
+counts.est_pose = checkPose("/viewer/est/pose", "/viewer/est/tf");
 
 // One message per decimated step of the run on every channel.
 const wantCount = Number((BigInt(expected.steps) + decimation - 1n) / decimation);
@@ -182,7 +206,8 @@ if (Object.keys(rows).length !== (byTopic.get("/viewer/nav_errors")?.size ?? 0))
 if (denied === 0 || denied === wantCount) problem(`gnss_denied is ${denied ? "always" : "never"} true: the run must cross the GNSS loss`);
 
 console.log(`viewer channels: ${wantCount} messages each; fixes ${counts.true_fix}/${counts.est_fix}, transforms ` +
-  `${counts.true_tf}/${counts.est_tf} checked against the raw topics; ${compared} error values against run.h5 and ` +
+  `${counts.true_tf}/${counts.est_tf} checked against the raw topics, poses ${counts.true_pose}/${counts.est_pose} ` +
+  `against the transforms; ${compared} error values against run.h5 and ` +
   `the raw topics; GNSS denied in ${denied} of ${wantCount}; largest horizontal error ${maxHor.toFixed(1)} m`);
 if (problems.length) {
   console.log(`FAIL: ${problems.length} problem(s)`);

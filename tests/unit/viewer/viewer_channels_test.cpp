@@ -40,14 +40,18 @@ runtime::InputBase* find_input(Owner& o, const std::string& topic) {
 
 }  // namespace
 
-TEST(ViewerChannels, ListsFiveChannelsWithSchemasAViewerRecognises) {
+TEST(ViewerChannels, ListsSevenChannelsWithSchemasAViewerRecognises) {
     const auto& c = viewer::viewer_channels();
-    ASSERT_EQ(c.size(), 5u);
+    ASSERT_EQ(c.size(), 7u);
     EXPECT_EQ(c[0].topic, "/viewer/true/fix");
     EXPECT_EQ(c[1].topic, "/viewer/est/fix");
     EXPECT_EQ(c[0].schema_name, "foxglove::LocationFix");
     EXPECT_EQ(c[2].schema_name, "foxglove::FrameTransform");
     EXPECT_EQ(c[4].schema_name, "gdnav::viewer::NavErrors");
+    EXPECT_EQ(c[5].topic, "/viewer/true/pose");
+    EXPECT_EQ(c[6].topic, "/viewer/est/pose");
+    EXPECT_EQ(c[5].schema_name, "foxglove::PoseInFrame");
+    EXPECT_EQ(c[6].schema_name, "foxglove::PoseInFrame");
     for (const auto& ch : c) {
         EXPECT_EQ(ch.schema_encoding, "omgidl");
         EXPECT_EQ(ch.message_encoding, "cdr");
@@ -57,6 +61,7 @@ TEST(ViewerChannels, ListsFiveChannelsWithSchemasAViewerRecognises) {
         EXPECT_TRUE(viewer::is_viewer_channel(ch.topic, ch.schema_name, "omgidl", "cdr"));
     }
     EXPECT_NE(c[0].schema.find("struct LocationFix"), std::string::npos);
+    EXPECT_NE(c[5].schema.find("struct PoseInFrame"), std::string::npos);
     EXPECT_NE(c[4].schema.find("struct NavErrors"), std::string::npos);
     EXPECT_FALSE(viewer::is_viewer_channel("/viewer/true/fix", "foxglove::FrameTransform", "omgidl", "cdr"));
     EXPECT_FALSE(viewer::is_viewer_channel("/imu", "foxglove::LocationFix", "omgidl", "cdr"));
@@ -88,11 +93,12 @@ TEST(ViewerChannels, ReusesTheOwnersInputsAndEncodesAtDecimatedSteps) {
     owner.truth.bind(&t);
 
     std::vector<viewer::ViewerMessage> out;
-    // Step 10 with Truth only: the two true channels.
+    // Step 10 with Truth only: the three true channels.
     vc.encode({10, 0.1, 0.01, false}, 100'000'000ULL, out);
-    ASSERT_EQ(out.size(), 2u);
+    ASSERT_EQ(out.size(), 3u);
     EXPECT_EQ(out[0].first, 0u);
     EXPECT_EQ(out[1].first, 2u);
+    EXPECT_EQ(out[2].first, 5u);
     const auto fix = decode<foxglove::LocationFix>(out[0].second);
     EXPECT_DOUBLE_EQ(fix.latitude(), 45.0);
     EXPECT_DOUBLE_EQ(fix.longitude(), 10.0);
@@ -105,6 +111,13 @@ TEST(ViewerChannels, ReusesTheOwnersInputsAndEncodesAtDecimatedSteps) {
     EXPECT_EQ(tf.translation().x(), 0.0);  // the first true position is the origin
     EXPECT_NEAR(tf.rotation().w(), std::sqrt(0.5), 1e-15);  // heading north: 90 deg about up
     EXPECT_NEAR(tf.rotation().z(), std::sqrt(0.5), 1e-15);
+    const auto pose = decode<foxglove::PoseInFrame>(out[2].second);  // the transform's pose, in the world frame
+    EXPECT_EQ(pose.frame_id(), "enu");
+    EXPECT_EQ(pose.timestamp().nsec(), 100'000'000u);
+    EXPECT_EQ(pose.pose_().position().x(), tf.translation().x());
+    EXPECT_EQ(pose.pose_().position().z(), tf.translation().z());
+    EXPECT_EQ(pose.pose_().orientation().w(), tf.rotation().w());
+    EXPECT_EQ(pose.pose_().orientation().z(), tf.rotation().z());
 
     // Step 15: between decimated steps, nothing.
     out.clear();
@@ -114,16 +127,21 @@ TEST(ViewerChannels, ReusesTheOwnersInputsAndEncodesAtDecimatedSteps) {
     vc.encode({15, 0.15, 0.01, false}, 150'000'000ULL, out);
     EXPECT_TRUE(out.empty());
 
-    // Step 20 with every input: all five, the errors as metrics computes them.
+    // Step 20 with every input: all seven, the errors as metrics computes them.
     vc.encode({20, 0.2, 0.01, false}, 200'000'000ULL, out);
-    ASSERT_EQ(out.size(), 5u);
-    EXPECT_EQ(out[2].first, 1u);
-    const auto est = decode<foxglove::LocationFix>(out[2].second);
+    ASSERT_EQ(out.size(), 7u);
+    EXPECT_EQ(out[3].first, 1u);
+    const auto est = decode<foxglove::LocationFix>(out[3].second);
     EXPECT_EQ(est.altitude(), 1003.0);
     EXPECT_EQ(est.frame_id(), "body_est");
-    const auto est_tf = decode<foxglove::FrameTransform>(out[3].second);
+    const auto est_tf = decode<foxglove::FrameTransform>(out[4].second);
     EXPECT_NEAR(est_tf.translation().z(), 3.0, 1e-6);  // 3 m above the origin
-    const auto e = decode<viewer::NavErrors>(out[4].second);
+    EXPECT_EQ(out[5].first, 6u);
+    const auto est_pose = decode<foxglove::PoseInFrame>(out[5].second);
+    EXPECT_EQ(est_pose.pose_().position().z(), est_tf.translation().z());
+    EXPECT_EQ(est_pose.pose_().orientation().w(), est_tf.rotation().w());
+    EXPECT_EQ(out[6].first, 4u);
+    const auto e = decode<viewer::NavErrors>(out[6].second);
     EXPECT_NEAR(e.att_err_deg(), 2.0, 1e-12);
     EXPECT_NEAR(e.yaw_err_deg(), 2.0, 1e-12);
     EXPECT_EQ(e.alt_err_m(), 3.0);

@@ -56,4 +56,16 @@ TEST(ViewerLayout, PanelsNameExistingChannelsAndFields) {
     EXPECT_NE(channel(map["followTopic"].as<std::string>()), nullptr);
     for (const auto& kv : map["topicColors"])
         EXPECT_EQ(channel(kv.first.as<std::string>())->schema_name, "foxglove::LocationFix");
+    // The 3D panel's topic layers (Foxglove/Lichtblick LayerSettingsPose: visible, type axis|arrow, arrowScale, color).
+    const YAML::Node three = layout["configById"]["3D!gdnav3d"]["topics"];
+    ASSERT_TRUE(three.IsMap());
+    EXPECT_EQ(three.size(), 2u);
+    for (const auto& kv : three) {
+        const auto* c = channel(kv.first.as<std::string>());
+        ASSERT_NE(c, nullptr) << kv.first.as<std::string>();
+        EXPECT_EQ(c->schema_name, "foxglove::PoseInFrame");
+        EXPECT_TRUE(kv.second["visible"].as<bool>());
+        EXPECT_EQ(kv.second["type"].as<std::string>(), "arrow");
+        EXPECT_EQ(kv.second["arrowScale"].size(), 3u);
+    }
 }
