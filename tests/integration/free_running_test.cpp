@@ -16,6 +16,9 @@ TEST(FreeRunning, MemberOutsideTheBarrierFeedsTheRunWhichIsMarkedNonReproducible
     YAML::Node doc = YAML::LoadFile(chain_scenario());
     doc["run"]["out_dir"] = out.string();
     doc["run"]["domain_id"] = static_cast<int>(getpid() % 150) + 60;
+    // Paced (5 s for 2000 steps): the clock does not wait for a free-running member, so an unpaced run (0.3 s) could
+    // end before the sensor's writer has matched the recorder and the filter (two CI runs recorded no chain/meas).
+    doc["run"]["realtime"] = 4;
     const auto cfg = out / "run.yaml";
     std::ofstream(cfg) << doc;
     const std::string c = cfg.string();
