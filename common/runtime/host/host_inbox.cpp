@@ -30,7 +30,7 @@ bool hand_over(const Route& r, const Local& consumer, const void* sample, std::u
         return true;
     }
     if (!ch.port->on_stride(s)) return true;  // a step the reader does not read (as the DDS stride filter)
-    ch.saw(s);
+    if (consumer.observer) ch.saw(s);  // only an observer's lost-step test reads it
     const long i = inbox_index(ch, consumer.next_step, s);
     if (i == kOlder) return true;  // no step of the reader needs it (as with a DDS sample)
     if (i == kTooFar) return false;
