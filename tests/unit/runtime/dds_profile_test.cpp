@@ -1,7 +1,8 @@
 // The default DDS profile (config/dds/gdnav_profiles.xml) as Fast DDS actually loads it: UDPv4 only, no shared memory
 // and no data sharing between processes (a SIGKILLed process must not be able to abort a healthy one through a
-// shared-memory mutex, docs/runtime.md "Transports"), and the writers keep Fast DDS's default heartbeat period (a
-// short one made long runs stall). Guards against an edit of the XML silently bringing either back.
+// shared-memory mutex, docs/runtime.md "Transports"), the writers keep Fast DDS's default heartbeat period (a
+// short one made long runs stall), and the data writers suppress NACKs for 100 ms (docs/runtime.md "NACK suppression"). Guards against an
+// edit of the XML silently bringing any of it back; and an observer's reader is best-effort.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -29,10 +30,22 @@ TEST(DdsProfile, DefaultProfileUsesUdpOnlyWithoutSharedMemory) {
         EXPECT_EQ(w->get_qos().data_sharing().kind(), DataSharingKind::OFF);
         EXPECT_EQ(w->get_qos().reliability().kind, RELIABLE_RELIABILITY_QOS);
         EXPECT_EQ(w->get_qos().reliable_writer_qos().times.heartbeatPeriod.seconds, 3);
+        // NACK suppression: with Fast DDS's 0 every sample written woke the event thread (docs/runtime.md).
+        const auto& nack = w->get_qos().reliable_writer_qos().times.nackSupressionDuration;
+        // Data writers only: control writers (statuses before discovery completes) repair a first sample at once.
+        EXPECT_EQ(nack.seconds, 0);
+        EXPECT_EQ(nack.nanosec, std::string(profile) == kDataWriterProfile ? 100'000'000u : 0u);
     }
     for (const char* profile : {kDataReaderProfile, kControlReaderProfile, kLatchedReaderProfile}) {
         SCOPED_TRACE(profile);
         DataReader* r = dds.reader(std::string("gdnav_test_r/") + profile, message_ops<gdnav::msg::Tick>(), profile);
         EXPECT_EQ(r->get_qos().data_sharing().kind(), DataSharingKind::OFF);
     }
+    // An observer's reader (Component::observer): the data profile with BEST_EFFORT reliability, the rest unchanged.
+    DataReader* be = dds.reader("gdnav_test_r/observer", message_ops<gdnav::msg::Tick>(), kDataReaderProfile, 1, true);
+    EXPECT_EQ(be->get_qos().reliability().kind, BEST_EFFORT_RELIABILITY_QOS);
+    EXPECT_EQ(be->get_qos().history().depth, 72);
+    EXPECT_EQ(be->get_qos().data_sharing().kind(), DataSharingKind::OFF);
+    DataReader* rel = dds.reader("gdnav_test_r/member", message_ops<gdnav::msg::Tick>(), kDataReaderProfile);
+    EXPECT_EQ(rel->get_qos().reliability().kind, RELIABLE_RELIABILITY_QOS);
 }
