@@ -74,6 +74,22 @@ TEST(ReviewPages, ChromiumOpensRunAndBatchPagesWithoutErrorsAndTheyShowTrackAndE
     EXPECT_NE(run0.find("noise of sensors_air"), std::string::npos);  // the scheduled fault is listed
     EXPECT_NE(run0.find("GNSS lost"), std::string::npos);
 
+    // review.py writes the run pages in worker processes (--jobs, default: the CPUs it may use); one worker or three
+    // write the same bytes, the batch page included (its bands add the runs in run order).
+    for (const char* jobs : {"1", "3"}) {
+        const fs::path o = dir / (std::string("review_jobs_") + jobs);
+        const Result r = run({"/usr/bin/python3", GDNAV_REVIEW_PY, dir.string(), "--out", o.string(), "--tables",
+                              (report / "tables.md").string(), "--runs-csv", (report / "runs.csv").string(), "--jobs",
+                              jobs},
+                             120.0);
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+    }
+    for (const std::string f : {"review.html", "review/run_0000.html", "review/run_0002.html"}) {
+        const std::string one = read_file(dir / "review_jobs_1" / f), three = read_file(dir / "review_jobs_3" / f);
+        EXPECT_GT(one.size(), 100000u) << f;
+        EXPECT_TRUE(one == three) << f << " differs between --jobs 1 and --jobs 3";
+    }
+
     const fs::path shots = GDNAV_REVIEW_SHOT_DIR;
     fs::remove(shots / "review_run.png");
     fs::remove(shots / "review_batch.png");

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Interactive flight review pages of a gdnav Monte Carlo batch (self-contained HTML, plotly).
 
-usage: /usr/bin/python3 tools/report/review.py BATCH_DIR [--out DIR] [--tables FILE] [--runs-csv FILE]
+usage: /usr/bin/python3 tools/report/review.py BATCH_DIR [--out DIR] [--tables FILE] [--runs-csv FILE] [--jobs N]
        /usr/bin/python3 tools/report/review.py --run RUN_DIR [--out FILE]
 
 Batch mode (called by `gdnav report` after report.py) writes to DIR (default BATCH_DIR/report):
@@ -13,11 +13,14 @@ Batch mode (called by `gdnav report` after report.py) writes to DIR (default BAT
                            and the run's events (faults, GNSS fixes and GNSS-denied state, logged component events)
 Run mode writes the page of one run folder (run.h5, metrics.yaml) to FILE (default RUN_DIR/review.html).
 
+The run pages are written by --jobs worker processes (default: the CPUs this process may use); the batch page's
+bands add the runs in run order whatever the number of workers, so the pages do not depend on it.
 Each page embeds plotly.js (review_page.py) and opens offline. Needs Debian's python3-plotly, -numpy, -h5py, -yaml.
 """
 import argparse
 import csv
 import math
+import multiprocessing
 import os
 import sys
 import time
@@ -263,7 +266,14 @@ class Progress:
             print(f"review.py: run page {k}/{self.total} ({name}), {now - self.t0:.0f} s", flush=True)
 
 
-def batch_pages(batch, out, tables_md, runs_csv):
+def _run_page_job(job):
+    """One run page in a worker process (batch_pages): returns what the batch bands need."""
+    r, path, title = job
+    t, err = run_page(r["dir"], r["h5"], r["metrics"], path, title, back="../review.html")
+    return t, err
+
+
+def batch_pages(batch, out, tables_md, runs_csv, jobs=1):
     runs = load_runs(batch)
     if not runs:
         print(f"review.py: no complete run in {batch}/runs", file=sys.stderr)
@@ -275,15 +285,23 @@ def batch_pages(batch, out, tables_md, runs_csv):
     os.makedirs(os.path.join(out, "review"), exist_ok=True)
     stats, pages, t_gnss = Streamed(ERROR_COLUMNS), {}, 100.0
     progress = Progress(len(runs))
-    for k, r in enumerate(runs, start=1):
-        name = os.path.basename(r["dir"])
-        rel = f"review/{name}.html"
-        t, err = run_page(r["dir"], r["h5"], r["metrics"], os.path.join(out, rel),
-                          f"Run {r['index']} — {label}, seed {r['metrics'].get('seed')}", back="../review.html")
-        t_gnss = float(r["metrics"].get("t_gnss_s", t_gnss))
-        stats.add(t, err)
-        pages[r["index"]] = rel
-        progress.done(k, name)
+    rels = [f"review/{os.path.basename(r['dir'])}.html" for r in runs]
+    work = [(r, os.path.join(out, rel), f"Run {r['index']} — {label}, seed {r['metrics'].get('seed')}")
+            for r, rel in zip(runs, rels)]
+    jobs = max(1, min(jobs, len(runs)))
+    pool = multiprocessing.get_context("fork").Pool(jobs) if jobs > 1 else None
+    try:
+        # imap keeps the run order: the bands are summed in the same order with any number of workers.
+        results = pool.imap(_run_page_job, work) if pool else map(_run_page_job, work)
+        for k, (r, rel, (t, err)) in enumerate(zip(runs, rels, results), start=1):
+            t_gnss = float(r["metrics"].get("t_gnss_s", t_gnss))
+            stats.add(t, err)
+            pages[r["index"]] = rel
+            progress.done(k, os.path.basename(r["dir"]))
+    finally:
+        if pool:
+            pool.close()
+            pool.join()
 
     csv_rows = read_runs_csv(runs_csv)
     page = Page(f"Flight review — {label}")
@@ -319,7 +337,11 @@ def main():
     p.add_argument("--out", default=None)
     p.add_argument("--tables", default=None, help="tables.md of gdnav report (default OUT/tables.md)")
     p.add_argument("--runs-csv", default=None, help="runs.csv of gdnav report (default OUT/runs.csv)")
+    p.add_argument("--jobs", type=int, default=len(os.sched_getaffinity(0)),
+                   help="run pages written in parallel (default: the CPUs this process may use)")
     a = p.parse_args()
+    if a.jobs < 1:
+        p.error(f"--jobs must be at least 1 (got {a.jobs})")
     if a.run:
         with open(os.path.join(a.run, "metrics.yaml")) as f:
             m = yaml.safe_load(f)
@@ -331,7 +353,7 @@ def main():
         p.error("give BATCH_DIR or --run RUN_DIR")
     out = a.out or os.path.join(a.batch, "report")
     return batch_pages(a.batch, out, a.tables or os.path.join(out, "tables.md"),
-                       a.runs_csv or os.path.join(out, "runs.csv"))
+                       a.runs_csv or os.path.join(out, "runs.csv"), a.jobs)
 
 
 if __name__ == "__main__":
