@@ -1,10 +1,13 @@
 // The DDS host: set-up, the main loop and the listener pump (state: host/host_impl.hpp).
 #include "runtime/host/host_impl.hpp"
 
+#include <algorithm>
+
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
 #include <spdlog/spdlog.h>
 
 #include "runtime/graph.hpp"
+#include "runtime/process_priority.hpp"
 #include "runtime/process_signals.hpp"
 #include "runtime/security/security.hpp"
 
@@ -22,6 +25,18 @@ void DdsHost::Impl::setup() {
     for (auto* c : g.order) {
         pname += "." + c->name();
         hosted.push_back(c->name());
+    }
+    // A process of observers only (the live bridge in the distributed layout) takes the CPU time the run leaves idle,
+    // before its DDS threads start (they inherit the value): nobody waits for it (runtime/process_priority.hpp).
+    const bool observers_only = std::all_of(raw.begin(), raw.end(), [](const Component* c) {
+        return c->observer() && c->outputs().empty();
+    });
+    if (observers_only && rc.observer_nice > 0) {
+        if (const std::string p = lower_cpu_priority(rc.observer_nice); p.empty())
+            spdlog::info("{}: only observers in this process: CPU priority nice {} (run.observer_nice)", pname.substr(6),
+                         rc.observer_nice);
+        else
+            spdlog::warn("{}: CPU priority unchanged ({}); the observers compete with the run", pname.substr(6), p);
     }
     dds = std::make_unique<DdsContext>(rc.domain_id, rc.dds_profile, pname, rc.security_dir,
                                        security::process_identity(hosted));

@@ -127,6 +127,7 @@ RunConfig RunConfig::parse(const std::string& text, const std::string& origin, c
     rc.stall_timeout_s = run.get_double("stall_timeout_s", 60.0, Range{1.0, 86400.0});
     rc.window_steps = static_cast<std::uint64_t>(run.get_int("window_steps", 64, 0, 64));
     if (rc.realtime > 0.0) rc.window_steps = 0;
+    rc.observer_nice = static_cast<int>(run.get_int("observer_nice", 19, 0, 19));
     rc.domain_given = run.has("domain_id");
     rc.domain_id = static_cast<int>(run.get_int("domain_id", 0, 0, 232));
     rc.essential = run.has("essential") ? run.get_strings("essential") : std::vector<std::string>{};

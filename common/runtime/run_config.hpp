@@ -14,6 +14,8 @@
 //     stall_timeout_s: 60      # wall-clock wait without progress while everybody is alive
 //     window_steps: 16         # how far a member may run ahead of the last Tick (0 = strict lockstep;
 //                              # forced to 0 when realtime > 0); see docs/runtime.md
+//     observer_nice: 19        # nice value (0..19) of a process that hosts only observers (e.g. the live bridge in
+//                              # the distributed layout); 0 = the run's own priority (runtime/process_priority.hpp)
 //     essential: [plant]       # members whose loss aborts the run
 //     external: [nav_att]      # members run outside gdnav (not started; waited for; docs/protocol.md)
 //     join_timeout_s: 60       # wall-clock wait for external members before step 0
@@ -83,6 +85,7 @@ public:
     double startup_timeout_s{30.0};
     double stall_timeout_s{60.0};
     std::uint64_t window_steps{64};
+    int observer_nice{19};  // nice value of a process hosting only observers (0: unchanged)
     // StepDone is reported every done_every steps (window/2, at least 1).
     [[nodiscard]] std::uint64_t done_every() const { return window_steps / 2 > 0 ? window_steps / 2 : 1; }
     int domain_id{0};

@@ -7,9 +7,15 @@
 #include <gtest/gtest.h>
 
 #include <signal.h>
+#include <sys/resource.h>
 
 #include <chrono>
+#include <algorithm>
+#include <filesystem>
 #include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
 #include <thread>
 
 #include <yaml-cpp/yaml.h>
@@ -18,6 +24,24 @@
 
 using namespace gdnav::testing;
 namespace fs = std::filesystem;
+
+namespace {
+
+// The nice value of every thread of process `pid` (/proc/PID/task/TID/stat, field 19).
+std::vector<int> thread_nices(pid_t pid) {
+    std::vector<int> v;
+    for (const auto& e : fs::directory_iterator("/proc/" + std::to_string(pid) + "/task")) {
+        const std::string stat = read_file(e.path() / "stat");
+        std::istringstream rest(stat.substr(stat.rfind(')') + 2));  // after "(comm) ": field 3 onwards
+        std::string field;
+        for (int i = 3; i <= 19 && rest >> field; ++i) {
+        }
+        v.push_back(std::stoi(field));
+    }
+    return v;
+}
+
+}  // namespace
 
 TEST(Observer, APausedLiveBridgeDoesNotHoldADistributedRun) {
     constexpr int kSteps = 8000;
@@ -39,6 +63,13 @@ TEST(Observer, APausedLiveBridgeDoesNotHoldADistributedRun) {
     const auto procs = read_processes(out);
     ASSERT_TRUE(procs.count("live")) << read_file(log);
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    // A process of observers only runs at run.observer_nice (default 19), every thread of it; the barrier members
+    // keep the priority they were started with (this test's).
+    const int own = getpriority(PRIO_PROCESS, 0);
+    const std::vector<int> live_nice = thread_nices(procs.at("live")), att_nice = thread_nices(procs.at("nav_att"));
+    ASSERT_GE(live_nice.size(), 2u);
+    for (int n : live_nice) EXPECT_EQ(n, std::max(own, 19)) << "a thread of the live bridge";
+    for (int n : att_nice) EXPECT_EQ(n, own) << "a thread of nav_att";
     ASSERT_EQ(kill(procs.at("live"), SIGSTOP), 0);
     std::this_thread::sleep_for(std::chrono::seconds(2));
     ASSERT_EQ(kill(procs.at("live"), SIGCONT), 0);

@@ -1,0 +1,17 @@
+#pragma once
+// CPU priority of a process that hosts only observers (Component::observer, docs/protocol.md §6.4): nobody waits for
+// an observer, so its process runs at a higher nice value and takes the CPU time the run's own members leave idle
+// instead of competing with them for it (docs/viewing.md, "Cost"). Linux nice values are per thread: every thread
+// of the process is changed, and threads created later inherit the creating thread's value.
+#include <string>
+
+namespace gdnav::runtime {
+
+// Sets every thread of this process to `nice` (1..19; only ever raised: a thread already nicer keeps its value).
+// Returns an empty string, or what failed (the process then runs on at its old priority).
+std::string lower_cpu_priority(int nice);
+
+// The nice value of thread `tid` of this process (0: the calling thread); for tests and logs.
+int thread_nice(int tid = 0);
+
+}  // namespace gdnav::runtime
