@@ -147,6 +147,23 @@ TEST(RunConfig, RejectsUnknownTopLevelAndEssentialNames) {
                  config::ConfigError);
 }
 
+TEST(RunConfig, ObserverNiceDefaultsTo19AndIsCheckedAgainst0To19) {
+    EXPECT_EQ(RunConfig::parse("run: {seed: 1, steps: 1}\ncomponents: {x: {type: y}}\n", "t").observer_nice, 19);
+    EXPECT_EQ(RunConfig::parse("run: {seed: 1, steps: 1, observer_nice: 0}\ncomponents: {x: {type: y}}\n", "t")
+                  .observer_nice,
+              0);
+    for (const char* bad : {"20", "-1", "high"}) {
+        try {
+            RunConfig::parse(std::string("run: {seed: 1, steps: 1, observer_nice: ") + bad +
+                                 "}\ncomponents: {x: {type: y}}\n",
+                             "t");
+            ADD_FAILURE() << "observer_nice " << bad << " accepted";
+        } catch (const config::ConfigError& e) {
+            EXPECT_NE(std::string(e.what()).find("observer_nice"), std::string::npos) << e.what();
+        }
+    }
+}
+
 TEST(Shm, OnlyFastDdsNamesAreCandidates) {
     EXPECT_TRUE(is_fastdds_shm_name("fastrtps_0a1b2c3d4e5f6a7b"));
     EXPECT_TRUE(is_fastdds_shm_name("sem.fastrtps_port7413_mutex"));
