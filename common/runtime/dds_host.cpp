@@ -16,6 +16,13 @@ namespace gdnav::runtime {
 using namespace eprosima::fastdds::dds;
 using eprosima::fastrtps::Duration_t;
 
+namespace {
+
+// An observer as the host treats it (docs/protocol.md §6.4): observer() and no outputs to hold anybody up.
+bool hosted_as_observer(const Component& c) { return c.observer() && c.outputs().empty(); }
+
+}  // namespace
+
 void DdsHost::Impl::setup() {
     std::vector<Component*> raw;
     for (auto& c : owned) raw.push_back(c.get());
@@ -28,15 +35,15 @@ void DdsHost::Impl::setup() {
     }
     // A process of observers only (the live bridge in the distributed layout) takes the CPU time the run leaves idle,
     // before its DDS threads start (they inherit the value): nobody waits for it (runtime/process_priority.hpp).
-    const bool observers_only = std::all_of(raw.begin(), raw.end(), [](const Component* c) {
-        return c->observer() && c->outputs().empty();
-    });
+    const bool observers_only =
+        std::all_of(raw.begin(), raw.end(), [](const Component* c) { return hosted_as_observer(*c); });
     if (observers_only && rc.observer_nice > 0) {
+        const std::string who = join_topics(hosted);
         if (const std::string p = lower_cpu_priority(rc.observer_nice); p.empty())
-            spdlog::info("{}: only observers in this process: CPU priority nice {} (run.observer_nice)", pname.substr(6),
+            spdlog::info("{}: only observers in this process: CPU priority nice {} (run.observer_nice)", who,
                          rc.observer_nice);
         else
-            spdlog::warn("{}: CPU priority unchanged ({}); the observers compete with the run", pname.substr(6), p);
+            spdlog::warn("{}: CPU priority unchanged ({}); the observers compete with the run", who, p);
     }
     dds = std::make_unique<DdsContext>(rc.domain_id, rc.dds_profile, pname, rc.security_dir,
                                        security::process_identity(hosted));
@@ -51,7 +58,7 @@ void DdsHost::Impl::setup() {
         Local l;
         l.comp = c;
         l.awaiting_rejoin = opt.rejoin;
-        l.observer = c->observer() && c->outputs().empty();
+        l.observer = hosted_as_observer(*c);
         for (InputBase* in : c->inputs()) {
             auto ch = std::make_unique<Channel>();
             ch->port = in;
