@@ -7,6 +7,7 @@
 #include <spdlog/spdlog.h>
 
 #include "runtime/graph.hpp"
+#include "runtime/mirror.hpp"
 #include "runtime/process_priority.hpp"
 #include "runtime/process_signals.hpp"
 #include "runtime/security/security.hpp"
@@ -54,6 +55,7 @@ void DdsHost::Impl::setup() {
                                        kClockName);
     done_writer = dds->writer(topics::kStepDone, message_ops<msg::StepDone>(), kControlWriterProfile);
     status_writer = dds->writer(topics::kStatus, message_ops<msg::ComponentStatus>(), kControlWriterProfile);
+    const bool secure_off = rc.security_dir.empty();  // mirrors for observers (runtime/mirror.hpp)
     for (Component* c : g.order) {
         Local l;
         l.comp = c;
@@ -63,15 +65,21 @@ void DdsHost::Impl::setup() {
             auto ch = std::make_unique<Channel>();
             ch->port = in;
             ch->ops = &in->ops();
-            ch->reader = dds->reader(in->topic(), in->ops(), kDataReaderProfile, in->stride(), l.observer);
+            // An observer's input that may read a mirror waits for the member table (make_deferred_readers).
+            ch->deferred = l.observer && secure_off && in->stride() % kMirrorStride == 0;
+            if (!ch->deferred)
+                ch->reader = dds->reader(in->topic(), in->ops(), kDataReaderProfile, in->stride(), l.observer);
             ch->scratch = ch->ops->create();
             ch->latest = ch->ops->create();
             for (auto& s : ch->slot) s = ch->ops->create();
             l.inputs.push_back(ch.get());
             channels.push_back(std::move(ch));
         }
-        for (OutputBase* o : c->outputs())
+        for (OutputBase* o : c->outputs()) {
             l.outputs.push_back(host::make_output(o, dds->writer(o->topic(), o->ops(), kDataWriterProfile)));
+            if (secure_off)
+                host::add_mirror(l.outputs.back(), dds->writer(mirror_topic(o->topic()), o->ops(), kDataWriterProfile));
+        }
         locals.push_back(std::move(l));
     }
     host::route_locally(locals);
@@ -85,7 +93,8 @@ void DdsHost::Impl::setup() {
 
 std::vector<DataReader*> DdsHost::Impl::data_readers() {
     std::vector<DataReader*> v{tick_reader};
-    for (auto& c : channels) v.push_back(c->reader);
+    for (auto& c : channels)
+        if (c->reader != nullptr) v.push_back(c->reader);
     return v;
 }
 

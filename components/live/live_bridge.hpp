@@ -21,7 +21,8 @@
 // the recording. At the end the per-client sent/dropped counts are logged and written to <out>/<name>_stats.yaml.
 // Its inputs have a stride (InputBase::set_stride of the topics' decimation, the viewer's, or both's greatest common
 // divisor for an input both use; the stride is a divisor of that, from 4 to 10, or 1), so over DDS the producers
-// send it one sample per stride, which includes every step it streams.
+// send it one sample per stride, which includes every step it streams (at stride 10 through their decimated mirrors
+// of the topics, runtime/mirror.hpp, where they write them).
 //
 // Adding channels: implement a ChannelSource (channel_source.hpp: channels() and encode(), as TopicChannels and
 // ViewerSource do) and append it to `sources_` in configure(); the bridge gives it the next channel ids, advertises

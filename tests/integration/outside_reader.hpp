@@ -1,6 +1,6 @@
 #pragma once
 // A DDS reader outside a run (a monitoring tool, not a member): takes every valid sample while the run's launcher
-// runs, and after it ended until nothing is left. Used by the composed-visibility and stride-reader tests.
+// runs, and after it ended until nothing is left. Used by the composed-visibility, stride-reader and mirror tests.
 #include <sys/types.h>
 
 #include <chrono>
@@ -16,11 +16,11 @@
 
 namespace gdnav::testing {
 
-// Calls on_step(step of the sample) for each sample; returns the launcher's exit code (-1: still running after
-// timeout_s plus 5 s).
-inline int read_while_running(pid_t launcher, eprosima::fastdds::dds::DataReader& reader,
-                              const runtime::MessageOps& ops, double timeout_s,
-                              const std::function<void(std::uint64_t)>& on_step) {
+// Calls on_sample(the sample, of ops' type) for each sample; returns the launcher's exit code (-1: still running
+// after timeout_s plus 5 s).
+inline int read_samples_while_running(pid_t launcher, eprosima::fastdds::dds::DataReader& reader,
+                                      const runtime::MessageOps& ops, double timeout_s,
+                                      const std::function<void(const void*)>& on_sample) {
     using eprosima::fastdds::dds::SampleInfo;
     void* sample = ops.create();
     int code = -1;
@@ -30,7 +30,7 @@ inline int read_while_running(pid_t launcher, eprosima::fastdds::dds::DataReader
         bool any = false;
         while (reader.take_next_sample(sample, &info) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) {
             if (!info.valid_data) continue;
-            on_step(ops.step_of(sample));
+            on_sample(sample);
             any = true;
         }
         if (!any) {
@@ -42,6 +42,14 @@ inline int read_while_running(pid_t launcher, eprosima::fastdds::dds::DataReader
     if (code == -1) code = wait_for(launcher, 5.0);
     ops.destroy(sample);
     return code;
+}
+
+// As read_samples_while_running, with on_step(step of the sample).
+inline int read_while_running(pid_t launcher, eprosima::fastdds::dds::DataReader& reader,
+                              const runtime::MessageOps& ops, double timeout_s,
+                              const std::function<void(std::uint64_t)>& on_step) {
+    return read_samples_while_running(launcher, reader, ops, timeout_s,
+                                      [&](const void* sample) { on_step(ops.step_of(sample)); });
 }
 
 }  // namespace gdnav::testing

@@ -7,6 +7,7 @@
 #include <spdlog/spdlog.h>
 
 #include "runtime/graph.hpp"
+#include "runtime/mirror.hpp"
 
 namespace gdnav::runtime {
 
@@ -134,7 +135,33 @@ void DdsHost::Impl::configure_from_table() {
             if (opt.free_running) ch->free = true;
         }
     }
+    make_deferred_readers();
     phase = Phase::Matching;
+}
+
+// An observer's inputs that may read a mirror get their reader once the member table names the producers
+// (runtime/mirror.hpp): the mirror when every producer writes one, else the topic itself (with the stride filter).
+void DdsHost::Impl::make_deferred_readers() {
+    const auto writes_mirror = [this](const std::string& name) {
+        const bool configured = std::any_of(rc.members.begin(), rc.members.end(),
+                                            [&](const MemberSpec& m) { return m.name == name; });
+        const bool here = std::any_of(locals.begin(), locals.end(),
+                                      [&](const Local& l) { return l.comp->name() == name; });
+        return configured && !rc.is_external(name) && !here;
+    };
+    for (auto& l : locals)
+        for (Channel* ch : l.inputs) {
+            if (ch->reader != nullptr || !ch->deferred) continue;
+            std::vector<std::string> names;
+            for (auto i : ch->producers) names.push_back(table[i].name().to_string());
+            const std::string& topic = ch->port->topic();
+            const bool mirror = reads_mirror(ch->port->stride(), !rc.security_dir.empty(), names, writes_mirror);
+            ch->reader = mirror ? dds->reader(mirror_topic(topic), *ch->ops, kDataReaderProfile, 1, true)
+                                : dds->reader(topic, *ch->ops, kDataReaderProfile, ch->port->stride(), true);
+            ch->reader->set_listener(&listener, StatusMask::data_available());
+            spdlog::debug("member '{}': input '{}' read from {}", l.comp->name(), topic,
+                          mirror ? mirror_topic(topic) : "the topic itself");
+        }
 }
 
 bool DdsHost::Impl::all_matched() {
@@ -148,9 +175,11 @@ bool DdsHost::Impl::all_matched() {
             int expected = 0;
             for (const auto& m : table)
                 for (const auto& t : split_topics(m.inputs().to_string())) expected += (t == o.port->topic());
+            // An observer may read the topic's mirror instead (runtime/mirror.hpp): its reader is matched there.
+            const int mirrored = o.mirror ? o.mirror_matched->readers.load() : 0;
             PublicationMatchedStatus st;
             o.writer->get_publication_matched_status(st);
-            if (st.current_count < expected) return false;
+            if (st.current_count + mirrored < expected) return false;
         }
     }
     SubscriptionMatchedStatus ts;

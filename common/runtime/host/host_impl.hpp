@@ -99,7 +99,8 @@ struct DdsHost::Impl {
 
     void setup();
 
-    std::vector<DataReader*> data_readers();
+    std::vector<DataReader*> data_readers();  // those made so far
+    void make_deferred_readers();
 
     // New Tick or data sample (listener threads, and the main loop after its own work).
     void pump();

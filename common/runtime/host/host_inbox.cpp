@@ -2,6 +2,8 @@
 
 #include <fastdds/dds/core/status/PublicationMatchedStatus.hpp>
 
+#include "runtime/mirror.hpp"
+
 namespace gdnav::runtime::host {
 
 long inbox_index(const Channel& ch, std::uint64_t next_step, std::uint64_t s) {
@@ -55,13 +57,30 @@ bool step_missed(const Local& l, std::uint64_t k) {
     return false;
 }
 
-Output make_output(OutputBase* port, eprosima::fastdds::dds::DataWriter* writer) {
-    Output o{port, writer, {}, std::make_unique<MatchCount>()};
-    writer->set_listener(o.matched.get(), eprosima::fastdds::dds::StatusMask::publication_matched());
+namespace {
+
+std::unique_ptr<MatchCount> count_matches(eprosima::fastdds::dds::DataWriter* writer) {
+    auto m = std::make_unique<MatchCount>();
+    writer->set_listener(m.get(), eprosima::fastdds::dds::StatusMask::publication_matched());
     eprosima::fastdds::dds::PublicationMatchedStatus st;  // matches made before the listener was set
     writer->get_publication_matched_status(st);
-    o.matched->readers.store(st.current_count);
-    return o;
+    m->readers.store(st.current_count);
+    return m;
+}
+
+}  // namespace
+
+Output make_output(OutputBase* port, eprosima::fastdds::dds::DataWriter* writer) {
+    return Output{port, writer, {}, count_matches(writer), nullptr, nullptr};
+}
+
+void add_mirror(Output& o, eprosima::fastdds::dds::DataWriter* mirror) {
+    o.mirror = mirror;
+    o.mirror_matched = count_matches(mirror);
+}
+
+bool mirror_due(const Output& o, std::uint64_t k) {
+    return o.mirror != nullptr && k % kMirrorStride == 0 && o.mirror_matched->readers.load() > 0;
 }
 
 bool read_outside(const Output& o) { return o.matched->readers.load() > static_cast<int>(o.routes.size()); }

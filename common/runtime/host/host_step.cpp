@@ -11,6 +11,7 @@ namespace gdnav::runtime {
 using namespace eprosima::fastdds::dds;
 
 void DdsHost::Impl::read_data(Local& l, Channel& ch) {
+    if (ch.reader == nullptr) return;  // an observer's input before CONFIGURE (make_deferred_readers)
     SampleInfo info;
     while (ch.reader->take_next_sample(ch.scratch, &info) == ReturnCode_t::RETCODE_OK) {
         if (!info.valid_data || ch.ops->run_of(ch.scratch) != ri.run_index) continue;
@@ -55,6 +56,7 @@ void DdsHost::Impl::publish(host::Output& o, std::uint64_t k) {
         if (!host::hand_over(r, locals[r.consumer], o.port->data(), k))
             warn_too_far(locals[r.consumer], *r.channel, k);
     if (o.routes.empty() || host::read_outside(o)) o.writer->write(o.port->data());
+    if (host::mirror_due(o, k)) o.mirror->write(o.port->data());
 }
 
 bool DdsHost::Impl::inputs_ready(const Local& l, std::uint64_t k) {

@@ -1,0 +1,17 @@
+#include "runtime/mirror.hpp"
+
+#include <algorithm>
+
+namespace gdnav::runtime {
+
+std::string mirror_topic(const std::string& topic) {
+    return topic + "/every_" + std::to_string(kMirrorStride) + "_steps";
+}
+
+bool reads_mirror(std::uint64_t stride, bool secure, const std::vector<std::string>& producers,
+                  const std::function<bool(const std::string&)>& writes_mirror) {
+    if (secure || stride == 0 || stride % kMirrorStride != 0 || producers.empty()) return false;
+    return std::all_of(producers.begin(), producers.end(), writes_mirror);
+}
+
+}  // namespace gdnav::runtime
