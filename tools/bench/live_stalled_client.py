@@ -5,8 +5,8 @@
 
 Connects to ws://127.0.0.1:PORT (retrying until the server listens, at most SECONDS), performs the handshake with
 subprotocol foxglove.websocket.v1, reads serverInfo and advertise, subscribes to every advertised channel, prints
-"STALLED N" (N channels) and then never reads again: the server's sends fill the socket buffers and its per-client
-limit, after which gdnav drops the frames for this client. Exits when killed or after SECONDS.
+"STALLED N" (N channels) and then never reads again: the server's sends fill the socket buffers (a 4 KiB receive
+buffer, so that they fill early) and its per-client limit, after which gdnav drops the frames for this client. Exits when killed or after SECONDS.
 """
 import json
 import os
@@ -21,9 +21,16 @@ deadline = time.time() + float(sys.argv[2] if len(sys.argv) > 2 else 300)
 
 def connect():
     while time.time() < deadline:
+        s = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+        # A small receive buffer (set before connecting, so the window is small from the start): the server's
+        # per-client limit, not the kernel's buffers, decides when the client is stalled, even in short runs.
+        s.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4096)
+        s.settimeout(5)
         try:
-            return socket.create_connection(("127.0.0.1", port), timeout=5)
+            s.connect(("127.0.0.1", port))
+            return s
         except OSError:
+            s.close()
             time.sleep(0.02)
     sys.exit("live_stalled_client: no server on port %d" % port)
 
