@@ -55,7 +55,7 @@ void DdsHost::Impl::setup() {
                                        kClockName);
     done_writer = dds->writer(topics::kStepDone, message_ops<msg::StepDone>(), kControlWriterProfile);
     status_writer = dds->writer(topics::kStatus, message_ops<msg::ComponentStatus>(), kControlWriterProfile);
-    const bool secure_off = rc.security_dir.empty();  // mirrors for observers (runtime/mirror.hpp)
+    const bool secure = !rc.security_dir.empty();  // no mirrors for observers then (runtime/mirror.hpp)
     for (Component* c : g.order) {
         Local l;
         l.comp = c;
@@ -66,9 +66,8 @@ void DdsHost::Impl::setup() {
             ch->port = in;
             ch->ops = &in->ops();
             // An observer's input that may read a mirror waits for the member table (make_deferred_readers).
-            ch->deferred = l.observer && secure_off && in->stride() % kMirrorStride == 0;
-            if (!ch->deferred)
-                ch->reader = dds->reader(in->topic(), in->ops(), kDataReaderProfile, in->stride(), l.observer);
+            ch->deferred = l.observer && may_read_mirror(in->stride(), secure);
+            if (!ch->deferred) ch->reader = topic_reader(*ch, l.observer);
             ch->scratch = ch->ops->create();
             ch->latest = ch->ops->create();
             for (auto& s : ch->slot) s = ch->ops->create();
@@ -77,7 +76,7 @@ void DdsHost::Impl::setup() {
         }
         for (OutputBase* o : c->outputs()) {
             l.outputs.push_back(host::make_output(o, dds->writer(o->topic(), o->ops(), kDataWriterProfile)));
-            if (secure_off)
+            if (!secure)
                 host::add_mirror(l.outputs.back(), dds->writer(mirror_topic(o->topic()), o->ops(), kDataWriterProfile));
         }
         locals.push_back(std::move(l));
@@ -89,6 +88,11 @@ void DdsHost::Impl::setup() {
         waitset.attach_condition(cond);
     }
     listener.host = this;
+}
+
+// The reader of an input on its topic itself (with the input's stride filter; best-effort for an observer).
+DataReader* DdsHost::Impl::topic_reader(const Channel& ch, bool observer) {
+    return dds->reader(ch.port->topic(), *ch.ops, kDataReaderProfile, ch.port->stride(), observer);
 }
 
 std::vector<DataReader*> DdsHost::Impl::data_readers() {

@@ -7,7 +7,7 @@
 // the producers' writers of the topic itself never see it, and deliver exactly what the run's own readers need.
 // (A writer-side content filter, runtime/stride_filter.hpp, delivers fewer samples too, but Fast DDS 2.9.1 still
 // sends a filtered reader GAPs and HEARTBEATs, and splits the writer's datagrams to the other readers: measured
-// +5.1 sendto per step for the bridge's eleven readers against +1.5 with mirrors.)
+// +5.1 sendto per step for the bridge's eleven readers against +1.3 with mirrors.)
 // Only gdnav's own hosts write mirrors: a producer run outside gdnav (an external member, another DDS vendor) need
 // not, so an observer reads the topic itself when any producer of it is external or not in the run's configuration.
 // Secure runs do not use mirrors (a PKI grants each identity its own topics, not mirrors of them).
@@ -22,6 +22,10 @@ inline constexpr std::uint64_t kMirrorStride = 10;
 
 // "gdnav/Truth" -> "gdnav/Truth/every_10_steps".
 std::string mirror_topic(const std::string& topic);
+
+// Whether an observer's input of `stride` could read a mirror at all (a multiple of kMirrorStride, not a secure
+// run): such an input gets its reader only at CONFIGURE, when reads_mirror() can be answered.
+bool may_read_mirror(std::uint64_t stride, bool secure);
 
 // Whether an observer's input of `stride` reads the mirror of its topic. producers: the names of the members that
 // write the topic (the clock's member table); writes_mirror(name): that member is a gdnav host in another process

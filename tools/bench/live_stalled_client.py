@@ -6,7 +6,8 @@
 Connects to ws://127.0.0.1:PORT (retrying until the server listens, at most SECONDS), performs the handshake with
 subprotocol foxglove.websocket.v1, reads serverInfo and advertise, subscribes to every advertised channel, prints
 "STALLED N" (N channels) and then never reads again: the server's sends fill the socket buffers (a 4 KiB receive
-buffer, so that they fill early) and its per-client limit, after which gdnav drops the frames for this client. Exits when killed or after SECONDS.
+buffer, so that they fill early) and its per-client limit, after which gdnav drops the frames for this client.
+Exits when killed or after SECONDS.
 """
 import json
 import os

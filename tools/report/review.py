@@ -269,8 +269,7 @@ class Progress:
 def _run_page_job(job):
     """One run page in a worker process (batch_pages): returns what the batch bands need."""
     r, path, title = job
-    t, err = run_page(r["dir"], r["h5"], r["metrics"], path, title, back="../review.html")
-    return t, err
+    return run_page(r["dir"], r["h5"], r["metrics"], path, title, back="../review.html")
 
 
 def batch_pages(batch, out, tables_md, runs_csv, jobs=1):

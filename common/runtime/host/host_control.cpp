@@ -157,7 +157,7 @@ void DdsHost::Impl::make_deferred_readers() {
             const std::string& topic = ch->port->topic();
             const bool mirror = reads_mirror(ch->port->stride(), !rc.security_dir.empty(), names, writes_mirror);
             ch->reader = mirror ? dds->reader(mirror_topic(topic), *ch->ops, kDataReaderProfile, 1, true)
-                                : dds->reader(topic, *ch->ops, kDataReaderProfile, ch->port->stride(), true);
+                                : topic_reader(*ch, true);
             ch->reader->set_listener(&listener, StatusMask::data_available());
             spdlog::debug("member '{}': input '{}' read from {}", l.comp->name(), topic,
                           mirror ? mirror_topic(topic) : "the topic itself");

@@ -101,6 +101,7 @@ struct DdsHost::Impl {
 
     std::vector<DataReader*> data_readers();  // those made so far
     void make_deferred_readers();
+    DataReader* topic_reader(const Channel& ch, bool observer);
 
     // New Tick or data sample (listener threads, and the main loop after its own work).
     void pump();
