@@ -5,11 +5,15 @@
 // every topic at several steps, message counts, metadata and the run.yaml attachment.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "h5_column.hpp"
 #include "process_util.hpp"
@@ -84,6 +88,91 @@ std::string sample_json(const fields::TypeFields& table, void* sample) {
     return o.str() + "}";
 }
 
+// The run's run.h5 (nav_recorder: a row every 10 steps; /gnss at the fix epochs) as expected values of the topic
+// fields it copies unchanged: {"TOPIC": {"STEP": {"field": {"kind", "values"}}}} at the rows of the given steps.
+// (Only these topics have their fields in run.h5; the sensors', guidance's and control's are in the MCAP only.)
+struct H5Field {
+    const char* topic;
+    const char* table;
+    const char* field;                 // dotted name in the message
+    std::vector<const char*> columns;  // one per value (an array field: one per element)
+    bool boolean = false;
+};
+
+std::string h5_expected(const fs::path& h5, double t0_s, double dt_s, const std::vector<std::uint64_t>& steps,
+                        std::size_t& values) {
+    const std::vector<H5Field> map{
+        {"gdnav/Truth", "truth", "lat_rad", {"lat_rad"}},
+        {"gdnav/Truth", "truth", "lon_rad", {"lon_rad"}},
+        {"gdnav/Truth", "truth", "h_m", {"h_m"}},
+        {"gdnav/Truth", "truth", "v_n_mps", {"vn_mps", "ve_mps", "vd_mps"}},
+        {"gdnav/Truth", "truth", "euler_rad", {"yaw_rad", "pitch_rad", "bank_rad"}},
+        {"gdnav/Truth", "truth", "tas_mps", {"tas_mps"}},
+        {"gdnav/Truth", "truth", "aoa_rad", {"aoa_rad"}},
+        {"gdnav/Truth", "truth", "dp_Pa", {"dp_Pa"}},
+        {"gdnav/Truth", "truth", "wind_n_mps", {"wind_n_mps", "wind_e_mps", "wind_d_mps"}},
+        {"gdnav/PositionEstimate", "estimate", "lat_rad", {"lat_rad"}},
+        {"gdnav/PositionEstimate", "estimate", "lon_rad", {"lon_rad"}},
+        {"gdnav/PositionEstimate", "estimate", "h_m", {"h_m"}},
+        {"gdnav/PositionEstimate", "estimate", "v_n_mps", {"vn_mps", "ve_mps", "vd_mps"}},
+        {"gdnav/PositionEstimate", "estimate", "gnss_denied", {"gnss_denied"}, true},
+        {"gdnav/AirDataEstimate", "estimate", "tas_mps", {"tas_mps"}},
+        {"gdnav/AirDataEstimate", "estimate", "Hp_m", {"Hp_m"}},
+        {"gdnav/AirDataEstimate", "estimate", "T_K", {"T_K"}},
+        {"gdnav/GnssSample", "gnss", "lat_rad", {"lat_rad"}},
+        {"gdnav/GnssSample", "gnss", "v_n_mps", {"vn_mps", "ve_mps", "vd_mps"}},
+    };
+    // topic -> step -> field -> (kind, values)
+    std::map<std::string, std::map<std::uint64_t, std::map<std::string, std::pair<std::string, std::vector<std::string>>>>> want;
+    for (const auto& m : map) {
+        const std::vector<double> t = h5_column(h5, m.table, "t_s");
+        for (std::size_t c = 0; c < m.columns.size(); ++c) {
+            const std::vector<double> col = h5_column(h5, m.table, m.columns[c]);
+            if (t.empty() || col.size() != t.size()) {
+                ADD_FAILURE() << "run.h5 /" << m.table << " has no column " << m.columns[c];
+                continue;
+            }
+            for (std::size_t i = 0; i < t.size(); ++i) {
+                const auto step = static_cast<std::uint64_t>(std::llround((t[i] - t0_s) / dt_s));
+                // /gnss has rows at the fix epochs only: the first fix at or after each listed step.
+                const bool at = m.table == std::string("gnss")
+                                    ? std::any_of(steps.begin(), steps.end(),
+                                                  [&](std::uint64_t s) { return step >= s && step < s + 100; })
+                                    : std::find(steps.begin(), steps.end(), step) != steps.end();
+                if (!at) continue;
+                char buf[40];
+                std::snprintf(buf, sizeof(buf), "%.17g", col[i]);
+                auto& [kind, v] = want[m.topic][step][m.field];
+                kind = m.boolean ? "bool" : "f64";
+                v.push_back(m.boolean ? (col[i] != 0.0 ? "true" : "false") : buf);
+                ++values;
+            }
+        }
+    }
+    std::ostringstream o;
+    o << "{";
+    bool first_topic = true;
+    for (const auto& [topic, by_step] : want) {
+        o << (first_topic ? "" : ", ") << json_string(topic) << ": {";
+        first_topic = false;
+        bool first_step = true;
+        for (const auto& [step, fields] : by_step) {
+            o << (first_step ? "" : ", ") << "\"" << step << "\": {";
+            first_step = false;
+            bool first_field = true;
+            for (const auto& [name, kv] : fields) {
+                o << (first_field ? "" : ", ") << json_string(name) << ": {\"kind\": \"" << kv.first
+                  << "\", \"values\": [";
+                for (std::size_t k = 0; k < kv.second.size(); ++k) o << (k ? ", " : "") << json_string(kv.second[k]);
+                o << "]}";
+                first_field = false;
+            }
+            o << "}";
+        }
+        o << "}";
+    }
+    return o.str() + "}";
+}
 
 }  // namespace
 
@@ -121,7 +210,11 @@ TEST(McapNode, OfficialReaderDecodesEveryMessageLikeGdnavsReader) {
         }
         json << "}}";
     }
-    json << "}, \"metadata\": {\"seed\": \"1\", \"run_index\": \"0\", \"steps\": \"3001\", \"t0_s\": \""
+    // And the fields that run.h5 holds, at its rows of steps 0, 1000, 2000 and 3000 (and the GNSS fixes after them).
+    std::size_t h5_values = 0;
+    json << "}, \"h5\": " << h5_expected(out / "run.h5", -50.0, 0.01, {0, 1000, 2000, 3000}, h5_values);
+    EXPECT_GT(h5_values, 100u);
+    json << ", \"metadata\": {\"seed\": \"1\", \"run_index\": \"0\", \"steps\": \"3001\", \"t0_s\": \""
          << rec.run_metadata.at("t0_s") << "\", \"config_digest\": \"" << rec.run_metadata.at("config_digest")
          << "\"}, \"run_yaml_bytes\": " << rec.run_yaml.size() << "}\n";
     EXPECT_EQ(rec.run_metadata.at("t0_s"), "-50");

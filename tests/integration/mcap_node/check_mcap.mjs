@@ -2,8 +2,9 @@
 // summary and index, and McapStreamReader front to back with CRC checks; zstd chunks through @foxglove/wasm-zstd)
 // and decodes every message of every channel with Foxglove's OMG IDL deserializer (@foxglove/omgidl-parser,
 // @foxglove/omgidl-serialization) from the schema stored in the file. Compares with the expected values that
-// gdnav's own reader wrote (EXPECTED.json, tests/integration/mcap_test.cpp): message counts per topic, and every
-// field of the samples at the listed steps, exactly. Exit 0 when everything matches, 1 with the mismatches.
+// gdnav's own reader wrote (EXPECTED.json, tests/integration/mcap_node_test.cpp): message counts per topic, and every
+// field of the samples at the listed steps, exactly; and, under "h5", the values the run's run.h5 holds of some
+// fields at some steps, exactly. Exit 0 when everything matches, 1 with the mismatches.
 //
 //   node check_mcap.mjs FILE.mcap EXPECTED.json
 import { readFile } from "node:fs/promises";
@@ -62,7 +63,7 @@ function same(decoded, want, kind) {
 function field(obj, dotted) {
   return dotted.split(".").reduce((o, k) => (o === undefined ? undefined : o[k]), obj);
 }
-function compare(topic, step, msg, want) {
+function compare(topic, step, msg, want, source = "gdnav's reader") {
   let compared = 0;
   for (const [name, { kind, values }] of Object.entries(want)) {
     const got = field(msg, name);
@@ -74,7 +75,7 @@ function compare(topic, step, msg, want) {
     for (let i = 0; i < values.length; ++i) {
       ++compared;
       if (!same(list[i], values[i], kind))
-        problem(`${topic} step ${step} ${name}[${i}]: decoded ${list[i]}, gdnav's reader ${values[i]}`);
+        problem(`${topic} step ${step} ${name}[${i}]: decoded ${list[i]}, ${source} ${values[i]}`);
     }
   }
   return compared;
@@ -82,7 +83,7 @@ function compare(topic, step, msg, want) {
 
 // Every message of every channel, through the index (log-time order), decoded.
 const counts = new Map();
-let decodedFields = 0, checkedSamples = 0;
+let decodedFields = 0, checkedSamples = 0, h5Fields = 0, h5Samples = 0;
 for await (const m of reader.readMessages({ validateCrcs: true })) {
   const d = decoders.get(m.channelId);
   if (!d) continue;
@@ -101,6 +102,11 @@ for await (const m of reader.readMessages({ validateCrcs: true })) {
     decodedFields += compare(d.topic, step, msg, want);
     ++checkedSamples;
   }
+  const h5 = expected.h5?.[d.topic]?.[String(step)];
+  if (h5) {
+    h5Fields += compare(d.topic, step, msg, h5, "run.h5");
+    ++h5Samples;
+  }
 }
 for (const [topic, e] of Object.entries(expected.topics)) {
   const got = counts.get(topic) ?? 0;
@@ -110,6 +116,8 @@ for (const [topic, e] of Object.entries(expected.topics)) {
 }
 const wantSamples = Object.values(expected.topics).reduce((n, e) => n + Object.keys(e.samples).length, 0);
 if (checkedSamples !== wantSamples) problem(`${checkedSamples} samples compared, ${wantSamples} expected`);
+const wantH5 = Object.values(expected.h5 ?? {}).reduce((n, e) => n + Object.keys(e).length, 0);
+if (h5Samples !== wantH5) problem(`${h5Samples} samples compared with run.h5, ${wantH5} expected`);
 
 // Metadata and attachment.
 const metadata = new Map();
@@ -135,7 +143,8 @@ if (BigInt(streamed) !== reader.statistics?.messageCount) problem(`stream reader
 await closeFile();
 
 for (const [topic, n] of counts) console.log(`  ${topic}: ${n} messages decoded (${decoders.get([...reader.channelsById].find(([, c]) => c.topic === topic)[0]).type})`);
-console.log(`compared ${decodedFields} field values of ${checkedSamples} samples with gdnav's reader; stream reader: ${streamed} messages; metadata: ${[...metadata.keys()].join(", ")}; run.yaml ${runYaml.length} bytes`);
+console.log(`compared ${decodedFields} field values of ${checkedSamples} samples with gdnav's reader, ` +
+  `${h5Fields} of ${h5Samples} samples with run.h5; stream reader: ${streamed} messages; metadata: ${[...metadata.keys()].join(", ")}; run.yaml ${runYaml.length} bytes`);
 if (problems.length) {
   console.log(`FAIL: ${problems.length} problem(s)`);
   for (const p of problems) console.log(`  ${p}`);
