@@ -10,10 +10,10 @@
 
 #include "bench_json.hpp"
 #include "montecarlo.hpp"
-#include "runtime/direct_executor.hpp"
-#include "runtime/launcher.hpp"
-#include "runtime/lockstep.hpp"
-#include "runtime/run_config.hpp"
+#include "framework/direct_executor.hpp"
+#include "launch/launcher.hpp"
+#include "framework/lockstep.hpp"
+#include "framework/run_config.hpp"
 
 namespace gdnav::app {
 

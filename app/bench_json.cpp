@@ -7,7 +7,7 @@
 #include <sstream>
 #include <thread>
 
-#include "runtime/run_config.hpp"
+#include "framework/run_config.hpp"
 
 namespace gdnav::app {
 

@@ -4,8 +4,8 @@
 #include <spdlog/spdlog.h>
 
 #include "commands.hpp"
-#include "runtime/lockstep.hpp"
-#include "runtime/topic_types.hpp"
+#include "framework/lockstep.hpp"
+#include "framework/topic_types.hpp"
 
 namespace gdnav::app {
 

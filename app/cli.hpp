@@ -1,6 +1,6 @@
 #pragma once
 // The gdnav command line (CLI11). Programs register the components they link and call cli_main.
-#include "runtime/registry.hpp"
+#include "framework/registry.hpp"
 
 namespace gdnav::app {
 

@@ -6,7 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "runtime/registry.hpp"
+#include "framework/registry.hpp"
 
 namespace gdnav::app {
 

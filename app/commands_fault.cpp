@@ -11,12 +11,12 @@
 #include <yaml-cpp/yaml.h>
 
 #include "commands.hpp"
-#include "runtime/dds_context.hpp"
-#include "runtime/lockstep.hpp"
-#include "runtime/messages.hpp"
-#include "runtime/run_config.hpp"
-#include "runtime/security/security.hpp"
-#include "runtime/topic_types.hpp"
+#include "dds/dds_context.hpp"
+#include "framework/lockstep.hpp"
+#include "msgs/messages.hpp"
+#include "framework/run_config.hpp"
+#include "dds/security/security.hpp"
+#include "framework/topic_types.hpp"
 
 namespace gdnav::app {
 

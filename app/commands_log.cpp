@@ -3,8 +3,8 @@
 
 #include "commands.hpp"
 #include "config/config.hpp"
-#include "log_export.hpp"
-#include "log_import.hpp"
+#include "io/flight_log/log_export.hpp"
+#include "io/flight_log/log_import.hpp"
 
 namespace gdnav::app {
 

@@ -29,9 +29,9 @@
 #include "commands_scenario.hpp"
 #include "montecarlo.hpp"
 #include "metrics/run_record.hpp"
-#include "runtime/lockstep.hpp"
-#include "runtime/process_signals.hpp"
-#include "runtime/run_config.hpp"
+#include "framework/lockstep.hpp"
+#include "dds/process/process_signals.hpp"
+#include "framework/run_config.hpp"
 
 namespace gdnav::app {
 

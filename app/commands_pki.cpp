@@ -10,10 +10,10 @@
 #include <spdlog/spdlog.h>
 
 #include "commands_scenario.hpp"
-#include "runtime/messages.hpp"
-#include "runtime/run_config.hpp"
-#include "runtime/security/pki.hpp"
-#include "runtime/security/security.hpp"
+#include "msgs/messages.hpp"
+#include "framework/run_config.hpp"
+#include "launch/pki/pki.hpp"
+#include "dds/security/security.hpp"
 
 namespace gdnav::app {
 

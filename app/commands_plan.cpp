@@ -11,8 +11,8 @@
 #include <spdlog/spdlog.h>
 #include <yaml-cpp/yaml.h>
 
-#include "runtime/deploy/plan.hpp"
-#include "runtime/launcher.hpp"
+#include "launch/plan/plan.hpp"
+#include "launch/launcher.hpp"
 #include "scenario_overrides.hpp"
 
 namespace gdnav::app {

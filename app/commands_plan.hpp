@@ -4,7 +4,7 @@
 #include <string>
 
 #include "command.hpp"
-#include "run_rewrites.hpp"
+#include "launch/run_rewrites.hpp"
 
 namespace gdnav::app {
 

@@ -13,12 +13,12 @@
 
 #include <spdlog/spdlog.h>
 
-#include "batch_dir.hpp"
-#include "batch_merge.hpp"
+#include "launch/batch/batch_dir.hpp"
+#include "launch/batch/batch_merge.hpp"
 #include "commands.hpp"
 #include "config/config.hpp"
 #include "metrics/report_tables.hpp"
-#include "runtime/run_config.hpp"
+#include "framework/run_config.hpp"
 
 namespace gdnav::app {
 

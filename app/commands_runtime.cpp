@@ -8,14 +8,14 @@
 #include "bench.hpp"
 #include "commands_plan.hpp"
 #include "commands_scenario.hpp"
-#include "run_rewrites.hpp"
-#include "runtime/clock.hpp"
-#include "runtime/dds_host.hpp"
-#include "runtime/graph.hpp"
-#include "runtime/launcher.hpp"
-#include "runtime/lockstep.hpp"
-#include "runtime/process_signals.hpp"
-#include "runtime/topic_types.hpp"
+#include "launch/run_rewrites.hpp"
+#include "dds/clock/clock.hpp"
+#include "dds/host/dds_host.hpp"
+#include "framework/graph.hpp"
+#include "launch/launcher.hpp"
+#include "framework/lockstep.hpp"
+#include "dds/process/process_signals.hpp"
+#include "framework/topic_types.hpp"
 
 namespace gdnav::app {
 

@@ -8,7 +8,7 @@
 #include "commands.hpp"
 #include "commands_scenario.hpp"
 #include "paper_scenarios.hpp"
-#include "runtime/run_config.hpp"
+#include "framework/run_config.hpp"
 #include "scenario_overrides.hpp"
 
 namespace gdnav::app {

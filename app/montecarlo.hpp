@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "batch_dir.hpp"
+#include "launch/batch/batch_dir.hpp"
 #include "command.hpp"
 #include "scenario_overrides.hpp"
 

@@ -15,7 +15,7 @@
 #include "config/config.hpp"
 #include "metrics/run_record.hpp"
 #include "montecarlo.hpp"
-#include "runtime/lockstep.hpp"
+#include "framework/lockstep.hpp"
 
 namespace gdnav::app {
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "runtime/registry.hpp"
+#include "framework/registry.hpp"
 
 namespace gdnav::app {
 // Registers every production component linked into gdnav.

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # gdnav one-command set-up for Debian 12 (as root, or with sudo available).
-#   deploy/setup.sh run    install missing packages, build, run the default end-to-end scenario
+#   deploy/setup.sh run    install missing packages, build the gdnav program, run the default end-to-end scenario
 #   deploy/setup.sh test   install missing packages, build, run the whole test suite (CTest)
-#   deploy/setup.sh build  install missing packages and build only
+#   deploy/setup.sh build  install missing packages and build everything (tests included)
 # Idempotent: packages already present are not reinstalled and the build is incremental.
 # Environment: BUILD_DIR (default build), JOBS (default nproc), GDNAV_SKIP_APT=1 to skip the package step.
 set -euo pipefail
@@ -48,10 +48,14 @@ if [ "${GDNAV_SKIP_APT:-0}" != 1 ]; then
   fi
 fi
 
-echo "gdnav setup: building in $build ($jobs jobs)"
+# `run` builds only the gdnav program (every component is linked into it); `build` and `test` build everything,
+# tests included.
+targets=()
+[ "$mode" = run ] && targets=(--target gdnav)
+echo "gdnav setup: building ${targets[1]:-everything} in $build ($jobs jobs)"
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release > "$build.configure.log" 2>&1 || {
   cat "$build.configure.log"; exit 1; }
-cmake --build "$build" -j "$jobs"
+cmake --build "$build" -j "$jobs" "${targets[@]}"
 
 case "$mode" in
   build) ;;

@@ -5,11 +5,11 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
-#include "runtime/dds_host.hpp"
-#include "runtime/lockstep.hpp"
-#include "runtime/process_signals.hpp"
-#include "runtime/run_config.hpp"
-#include "runtime/topic_types.hpp"
+#include "dds/host/dds_host.hpp"
+#include "framework/lockstep.hpp"
+#include "dds/process/process_signals.hpp"
+#include "framework/run_config.hpp"
+#include "framework/topic_types.hpp"
 
 namespace gdnav::client {
 

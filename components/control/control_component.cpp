@@ -2,8 +2,8 @@
 
 #include "control/model/autopilot.hpp"
 #include "gnc/modes.hpp"
-#include "guidance/estimate_inputs.hpp"
-#include "runtime/run_config.hpp"
+#include "gnc_inputs/estimate_inputs.hpp"
+#include "framework/run_config.hpp"
 
 namespace gdnav::control {
 

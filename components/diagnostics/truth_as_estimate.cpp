@@ -1,6 +1,6 @@
 #include "truth_as_estimate.hpp"
 
-#include "runtime/messages.hpp"
+#include "msgs/messages.hpp"
 
 namespace gdnav::diagnostics {
 

@@ -4,9 +4,9 @@
 
 #include "flight_physics/model/flight_physics.hpp"
 #include "guidance/model/mission_yaml.hpp"
-#include "runtime/messages.hpp"
-#include "runtime/msg_eigen.hpp"
-#include "runtime/run_config.hpp"
+#include "msgs/messages.hpp"
+#include "framework/msg_eigen.hpp"
+#include "framework/run_config.hpp"
 
 namespace gdnav::physics {
 

@@ -16,7 +16,7 @@
 //   earth_truth: {dg_mps2, tilt_deg, tilt_axis_bearing_deg, mag_dev_n_nT: [N, E, D]}                 (optional)
 //   draw: none | scenario1 | scenario2   # draw whatever of wind/offsets/earth_truth is not given from this
 //                                        # component's stream with the scenario's distributions (default none)
-#include "runtime/registry.hpp"
+#include "framework/registry.hpp"
 
 namespace gdnav::physics {
 void register_flight_physics(runtime::ComponentRegistry& reg);

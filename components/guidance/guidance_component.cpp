@@ -3,10 +3,10 @@
 #include <optional>
 
 #include "gnc/modes.hpp"
-#include "estimate_inputs.hpp"
+#include "gnc_inputs/estimate_inputs.hpp"
 #include "guidance/model/guidance.hpp"
 #include "guidance/model/mission_yaml.hpp"
-#include "runtime/run_config.hpp"
+#include "framework/run_config.hpp"
 
 namespace gdnav::guidance {
 

@@ -1,7 +1,7 @@
 #pragma once
 // guidance: AirDataEstimate + AttitudeEstimate + PositionEstimate (step k) -> GuidanceTargets (step k).
 // Config: `mission: missions/<file>.yaml` (relative to config/) or an inline `mission:` mapping (same format).
-#include "runtime/registry.hpp"
+#include "framework/registry.hpp"
 
 namespace gdnav::guidance {
 void register_guidance_component(runtime::ComponentRegistry& reg);

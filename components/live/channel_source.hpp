@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "foxglove_ws/server.hpp"
-#include "runtime/component.hpp"
+#include "io/foxglove_ws/server.hpp"
+#include "framework/component.hpp"
 
 namespace gdnav::live {
 

@@ -7,9 +7,9 @@
 
 #include <spdlog/spdlog.h>
 
-#include "foxglove_ws/ws_endpoint.hpp"
-#include "record_file.hpp"
-#include "runtime/topic_types.hpp"
+#include "io/foxglove_ws/ws_endpoint.hpp"
+#include "io/recording/record_file.hpp"
+#include "framework/topic_types.hpp"
 #include "topic_channels.hpp"
 #include "viewer_source.hpp"
 

@@ -33,8 +33,8 @@
 #include <vector>
 
 #include "channel_source.hpp"
-#include "foxglove_ws/server.hpp"
-#include "runtime/registry.hpp"
+#include "io/foxglove_ws/server.hpp"
+#include "framework/registry.hpp"
 
 namespace gdnav::live {
 

@@ -2,8 +2,8 @@
 
 #include <stdexcept>
 
-#include "record_file.hpp"
-#include "runtime/topic_types.hpp"
+#include "io/recording/record_file.hpp"
+#include "framework/topic_types.hpp"
 
 namespace gdnav::live {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "channel_source.hpp"
-#include "viewer_channels.hpp"
+#include "io/viewer/viewer_channels.hpp"
 
 namespace gdnav::live {
 

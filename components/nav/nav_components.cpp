@@ -10,7 +10,7 @@
 #include "model/attitude_filter.hpp"
 #include "model/position_filter.hpp"
 #include "nav_convert.hpp"
-#include "runtime/run_config.hpp"
+#include "framework/run_config.hpp"
 
 namespace gdnav::nav {
 

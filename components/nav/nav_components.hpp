@@ -13,7 +13,7 @@
 // publishes "GNSS lost: <reason>" on ComponentStatus; it returns to GNSS-aided after 5 consecutive consistent fixes
 // and publishes "GNSS re-acquired". Every filter rejects non-finite or out-of-range samples; the components publish
 // the rejection counts on ComponentStatus (MODE) and log an end-of-run summary (docs/navigation.md, issue 11).
-#include "runtime/registry.hpp"
+#include "framework/registry.hpp"
 
 namespace gdnav::nav {
 void register_nav_components(runtime::ComponentRegistry& reg);

@@ -1,8 +1,8 @@
 #pragma once
 // Copies between the IDL topics (gdnav::msg) and the navigation models' plain structs (gdnav::nav).
 #include "model/nav_types.hpp"
-#include "runtime/messages.hpp"
-#include "runtime/msg_eigen.hpp"
+#include "msgs/messages.hpp"
+#include "framework/msg_eigen.hpp"
 
 namespace gdnav::nav {
 

@@ -12,8 +12,8 @@
 #include "h5_file.hpp"
 #include "metrics/run_metrics.hpp"
 #include "metrics/run_record.hpp"
-#include "runtime/messages.hpp"
-#include "series_columns.hpp"
+#include "msgs/messages.hpp"
+#include "io/run_series/series_columns.hpp"
 
 namespace gdnav::nav_recorder {
 

@@ -26,7 +26,7 @@
 //   gnss_track: true     # record the GNSS fixes (needs a GnssSample producer)
 //   metrics_start_s: 0   # start of the metrics window
 //   attitude_trend_from_s: 500   # start of the attitude-drift fit (metrics.yaml trends; docs/montecarlo.md)
-#include "runtime/registry.hpp"
+#include "framework/registry.hpp"
 
 namespace gdnav::nav_recorder {
 void register_nav_recorder(runtime::ComponentRegistry& reg);

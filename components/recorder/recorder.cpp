@@ -6,9 +6,9 @@
 
 #include <spdlog/spdlog.h>
 
-#include "run_metadata.hpp"
-#include "runtime/registry.hpp"
-#include "runtime/topic_types.hpp"
+#include "io/recording/run_metadata.hpp"
+#include "framework/registry.hpp"
+#include "framework/topic_types.hpp"
 
 namespace gdnav::recorder {
 

@@ -20,10 +20,10 @@
 #include <memory>
 #include <vector>
 
-#include "recording_writer.hpp"
-#include "runtime/component.hpp"
-#include "runtime/registry.hpp"
-#include "viewer_channels.hpp"
+#include "io/recording/recording_writer.hpp"
+#include "framework/component.hpp"
+#include "framework/registry.hpp"
+#include "io/viewer/viewer_channels.hpp"
 
 namespace gdnav::recorder {
 

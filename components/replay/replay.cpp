@@ -6,7 +6,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include "runtime/topic_types.hpp"
+#include "framework/topic_types.hpp"
 
 namespace gdnav::replay {
 

@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "record_file.hpp"
-#include "runtime/component.hpp"
-#include "runtime/registry.hpp"
+#include "io/recording/record_file.hpp"
+#include "framework/component.hpp"
+#include "framework/registry.hpp"
 
 namespace gdnav::replay {
 

@@ -1,8 +1,8 @@
 #include "sensor_components.hpp"
 
-#include "runtime/messages.hpp"
-#include "runtime/msg_eigen.hpp"
-#include "runtime/run_config.hpp"
+#include "msgs/messages.hpp"
+#include "framework/msg_eigen.hpp"
+#include "framework/run_config.hpp"
 #include "sensors/model/air_data.hpp"
 #include "sensors/model/alignment.hpp"
 #include "sensors/model/gnss.hpp"

@@ -11,7 +11,7 @@
 // Config section of each: `suite: sensors/suite.yaml` (relative to config/; grades named in the suite) and
 // optionally `grade: <name>` to override the suite's grade for this group (inertial: `gyr_grade`, `acc_grade`,
 // `bias_drift_band`), and for GNSS `loss_time_s` (t_GNSS) or `never_lost: true`. Step time and t0 come from the run.
-#include "runtime/registry.hpp"
+#include "framework/registry.hpp"
 
 namespace gdnav::sensors {
 

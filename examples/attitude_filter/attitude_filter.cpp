@@ -23,7 +23,7 @@
 #include <spdlog/spdlog.h>
 
 #include "math/rotation.hpp"
-#include "runtime/msg_eigen.hpp"
+#include "framework/msg_eigen.hpp"
 
 namespace gc = gdnav::client;
 namespace msg = gdnav::msg;

@@ -14,8 +14,8 @@
 
 #include "control/model/autopilot.hpp"
 #include "gnc/modes.hpp"
-#include "runtime/msg_eigen.hpp"
-#include "runtime/run_config.hpp"
+#include "framework/msg_eigen.hpp"
+#include "framework/run_config.hpp"
 
 namespace gc = gdnav::client;
 namespace msg = gdnav::msg;

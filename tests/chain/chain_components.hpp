@@ -4,14 +4,9 @@
 //   chain_sensor:     y = x + n,  n ~ N(0, sigma_n^2)
 //   chain_filter:     alpha-beta filter on y
 //   chain_controller: u = -kp (x_hat - target) - kd v_hat   (fed back to the plant one step later)
-#include "chainPubSubTypes.h"
-#include "runtime/component.hpp"
-#include "runtime/registry.hpp"
-
-GDNAV_DECLARE_MESSAGE(gdnav::testchain::ChainState, gdnav::testchain::ChainStatePubSubType)
-GDNAV_DECLARE_MESSAGE(gdnav::testchain::ChainMeas, gdnav::testchain::ChainMeasPubSubType)
-GDNAV_DECLARE_MESSAGE(gdnav::testchain::ChainEstimate, gdnav::testchain::ChainEstimatePubSubType)
-GDNAV_DECLARE_MESSAGE(gdnav::testchain::ChainControl, gdnav::testchain::ChainControlPubSubType)
+#include "chain.h"
+#include "framework/component.hpp"
+#include "framework/registry.hpp"
 
 namespace gdnav::testchain {
 

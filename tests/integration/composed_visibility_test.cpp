@@ -10,10 +10,10 @@
 
 #include "outside_reader.hpp"
 #include "process_util.hpp"
-#include "runtime/dds_context.hpp"
-#include "runtime/messages.hpp"
-#include "runtime/run_config.hpp"
-#include "runtime/topic_types.hpp"
+#include "dds/dds_context.hpp"
+#include "msgs/messages.hpp"
+#include "framework/run_config.hpp"
+#include "framework/topic_types.hpp"
 
 using namespace gdnav::testing;
 namespace rt = gdnav::runtime;

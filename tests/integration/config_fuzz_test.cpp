@@ -40,7 +40,7 @@
 #include "process_util.hpp"
 #include "random/stream.hpp"
 #include "register_components.hpp"
-#include "runtime/topic_types.hpp"
+#include "framework/topic_types.hpp"
 
 namespace fs = std::filesystem;
 

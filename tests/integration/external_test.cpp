@@ -14,7 +14,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "process_util.hpp"
-#include "runtime/shm_cleanup.hpp"
+#include "launch/shm_cleanup.hpp"
 
 using namespace gdnav::testing;
 namespace fs = std::filesystem;

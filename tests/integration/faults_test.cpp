@@ -11,7 +11,7 @@
 
 #include "process_util.hpp"
 #include "random/stream.hpp"
-#include "runtime/shm_cleanup.hpp"
+#include "launch/shm_cleanup.hpp"
 
 using namespace gdnav::testing;
 namespace fs = std::filesystem;

@@ -17,9 +17,9 @@
 
 #include "h5_column.hpp"
 #include "process_util.hpp"
-#include "record_file.hpp"
-#include "runtime/fields/field_table.hpp"
-#include "runtime/topic_types.hpp"
+#include "io/recording/record_file.hpp"
+#include "framework/fields/field_table.hpp"
+#include "framework/topic_types.hpp"
 
 using namespace gdnav::testing;
 namespace fs = std::filesystem;

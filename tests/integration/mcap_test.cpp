@@ -15,8 +15,8 @@
 #include <thread>
 
 #include "process_util.hpp"
-#include "record_file.hpp"
-#include "runtime/topic_types.hpp"
+#include "io/recording/record_file.hpp"
+#include "framework/topic_types.hpp"
 
 using namespace gdnav::testing;
 namespace fs = std::filesystem;

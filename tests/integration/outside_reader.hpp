@@ -12,7 +12,7 @@
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
 
 #include "process_util.hpp"
-#include "runtime/message_traits.hpp"
+#include "msgs/message_ops.hpp"
 
 namespace gdnav::testing {
 

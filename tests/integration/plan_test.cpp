@@ -14,7 +14,7 @@
 
 #include "netns.hpp"
 #include "process_util.hpp"
-#include "runtime/lockstep.hpp"
+#include "framework/lockstep.hpp"
 
 using namespace gdnav::testing;
 namespace fs = std::filesystem;

@@ -5,9 +5,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "record_file.hpp"
-#include "runtime/messages.hpp"
-#include "runtime/topic_types.hpp"
+#include "io/recording/record_file.hpp"
+#include "msgs/messages.hpp"
+#include "framework/topic_types.hpp"
 
 namespace gdnav::testing {
 

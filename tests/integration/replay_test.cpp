@@ -12,10 +12,10 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "mcap/mcap_writer.hpp"
+#include "io/mcap/mcap_writer.hpp"
 #include "process_util.hpp"
 #include "record_reader.hpp"
-#include "recording_writer.hpp"
+#include "io/recording/recording_writer.hpp"
 
 using namespace gdnav::testing;
 namespace fs = std::filesystem;

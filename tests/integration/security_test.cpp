@@ -17,11 +17,11 @@
 #include <fastdds/dds/subscriber/DataReader.hpp>
 
 #include "process_util.hpp"
-#include "runtime/dds_context.hpp"
-#include "runtime/lockstep.hpp"
-#include "runtime/messages.hpp"
-#include "runtime/run_config.hpp"
-#include "runtime/topic_types.hpp"
+#include "dds/dds_context.hpp"
+#include "framework/lockstep.hpp"
+#include "msgs/messages.hpp"
+#include "framework/run_config.hpp"
+#include "framework/topic_types.hpp"
 
 using namespace gdnav::testing;
 namespace rt = gdnav::runtime;

@@ -6,8 +6,8 @@
 
 #include <pybind11/pybind11.h>
 
-#include "runtime/fields/field_table.hpp"
-#include "runtime/component.hpp"
+#include "framework/fields/field_table.hpp"
+#include "framework/component.hpp"
 
 namespace gdnav::pyclient {
 

@@ -28,7 +28,7 @@
 #include <optional>
 
 #include "autopilot_config.hpp"
-#include "guidance/model/guidance.hpp"
+#include "gnc/guidance_output.hpp"
 #include "measurements.hpp"
 #include "pid.hpp"
 

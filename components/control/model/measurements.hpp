@@ -12,19 +12,10 @@
 //   air_bearing, air_path_angle, air_bank Euler 3-2-1 (chi_TAS, gamma_TAS, mu_TAS) of R_nw = R_nb R_bw,
 //                                         R_bw = math::dcm_body_from_wind(alpha, beta)
 //   sideslip                              beta
+#include "gnc/control_estimates.hpp"
 #include "math/rotation.hpp"
 
 namespace gdnav::control {
-
-struct ControlEstimates {
-    double airspeed_mps{0.0};
-    double aoa_rad{0.0};
-    double aos_rad{0.0};
-    math::Quat q_nb{math::Quat::Identity()};
-    math::Vec3 v_n_mps{math::Vec3::Zero()};
-    double pressure_altitude_m{0.0};
-    double altitude_m{0.0};
-};
 
 struct LoopMeasurements {
     double airspeed_mps{0.0};

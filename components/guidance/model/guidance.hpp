@@ -15,16 +15,11 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "gnc/guidance_output.hpp"
 #include "mission.hpp"
 #include "trigger.hpp"
 
 namespace gdnav::guidance {
-
-struct GuidanceOutput {
-    std::uint32_t operation{0};
-    gnc::ChannelTargets targets;
-    bool finished{false};
-};
 
 class Guidance {
 public:

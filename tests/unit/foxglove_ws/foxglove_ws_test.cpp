@@ -13,8 +13,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "foxglove_ws/protocol.hpp"
-#include "foxglove_ws/server.hpp"
+#include "io/foxglove_ws/protocol.hpp"
+#include "io/foxglove_ws/server.hpp"
 
 using namespace gdnav::foxglove_ws;
 using nlohmann::json;

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "mcap/crc32.hpp"
-#include "mcap/mcap_format.hpp"
-#include "mcap/mcap_reader.hpp"
-#include "mcap/mcap_writer.hpp"
+#include "io/mcap/crc32.hpp"
+#include "io/mcap/mcap_format.hpp"
+#include "io/mcap/mcap_reader.hpp"
+#include "io/mcap/mcap_writer.hpp"
 
 namespace fs = std::filesystem;
 using namespace gdnav::mcap;

@@ -11,9 +11,9 @@
 
 #include "metrics/run_record.hpp"
 #include "nav_recorder.hpp"
-#include "runtime/direct_executor.hpp"
-#include "runtime/messages.hpp"
-#include "runtime/run_config.hpp"
+#include "framework/direct_executor.hpp"
+#include "msgs/messages.hpp"
+#include "framework/run_config.hpp"
 
 using namespace gdnav;
 namespace fs = std::filesystem;

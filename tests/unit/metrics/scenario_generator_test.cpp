@@ -7,7 +7,7 @@
 #include "guidance/model/mission_yaml.hpp"
 #include "paper_scenarios.hpp"
 #include "random/stream.hpp"
-#include "runtime/scenario_generator.hpp"
+#include "framework/scenario_generator.hpp"
 #include "scenario_yaml.hpp"
 
 using namespace gdnav;

@@ -4,7 +4,7 @@
 #include <algorithm>
 
 #include "config/config.hpp"
-#include "runtime/run_config.hpp"
+#include "framework/run_config.hpp"
 #include "scenario_overrides.hpp"
 #include "scenario_yaml.hpp"
 

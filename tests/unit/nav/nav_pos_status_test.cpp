@@ -10,7 +10,7 @@
 #include "nav_chain.hpp"
 #include "nav_components.hpp"
 #include "nav_convert.hpp"
-#include "runtime/registry.hpp"
+#include "framework/registry.hpp"
 
 using namespace gdnav;
 using namespace gdnav::nav;

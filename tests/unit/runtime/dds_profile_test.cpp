@@ -8,9 +8,9 @@
 
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
 
-#include "runtime/dds_context.hpp"
-#include "runtime/messages.hpp"
-#include "runtime/run_config.hpp"
+#include "dds/dds_context.hpp"
+#include "msgs/messages.hpp"
+#include "framework/run_config.hpp"
 
 using namespace gdnav::runtime;
 using namespace eprosima::fastdds::dds;

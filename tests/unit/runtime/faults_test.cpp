@@ -7,11 +7,11 @@
 #include <filesystem>
 #include <fstream>
 
-#include "runtime/faults/fault_schedule.hpp"
-#include "runtime/faults/input_faults.hpp"
-#include "runtime/messages.hpp"
-#include "runtime/run_config.hpp"
-#include "runtime/topic_types.hpp"
+#include "framework/faults/fault_schedule.hpp"
+#include "framework/faults/input_faults.hpp"
+#include "msgs/messages.hpp"
+#include "framework/run_config.hpp"
+#include "framework/topic_types.hpp"
 
 using namespace gdnav;
 using runtime::faults::FaultSchedule;

@@ -5,8 +5,8 @@
 #include <set>
 #include <string>
 
-#include "runtime/component.hpp"
-#include "runtime/mirror.hpp"
+#include "framework/component.hpp"
+#include "dds/host/mirror.hpp"
 
 namespace rt = gdnav::runtime;
 

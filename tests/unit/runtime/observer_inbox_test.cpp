@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "chain_components.hpp"
-#include "runtime/host/host_inbox.hpp"
+#include "dds/host/host_inbox.hpp"
 
 using namespace gdnav;
 using namespace gdnav::runtime;

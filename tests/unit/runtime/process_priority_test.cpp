@@ -9,7 +9,7 @@
 #include <string>
 #include <thread>
 
-#include "runtime/process_priority.hpp"
+#include "dds/process/process_priority.hpp"
 
 using gdnav::runtime::lower_cpu_priority;
 using gdnav::runtime::thread_nice;

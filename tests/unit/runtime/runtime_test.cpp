@@ -3,10 +3,10 @@
 
 #include "chain_components.hpp"
 #include "recorder.hpp"
-#include "runtime/direct_executor.hpp"
-#include "runtime/graph.hpp"
-#include "runtime/run_config.hpp"
-#include "runtime/shm_cleanup.hpp"
+#include "framework/direct_executor.hpp"
+#include "framework/graph.hpp"
+#include "framework/run_config.hpp"
+#include "launch/shm_cleanup.hpp"
 
 using namespace gdnav;
 using namespace gdnav::runtime;

@@ -9,12 +9,12 @@
 #include <thread>
 #include <vector>
 
-#include "runtime/dds_context.hpp"
-#include "runtime/lockstep.hpp"
-#include "runtime/message_traits.hpp"
-#include "runtime/messages.hpp"
-#include "runtime/run_config.hpp"
-#include "runtime/status_filter.hpp"
+#include "dds/dds_context.hpp"
+#include "framework/lockstep.hpp"
+#include "msgs/message_ops.hpp"
+#include "msgs/messages.hpp"
+#include "framework/run_config.hpp"
+#include "dds/filters/status_filter.hpp"
 
 namespace rt = gdnav::runtime;
 namespace msg = gdnav::msg;

@@ -4,10 +4,10 @@
 
 #include <vector>
 
-#include "runtime/component.hpp"
-#include "runtime/messages.hpp"
-#include "runtime/stride_filter.hpp"
-#include "runtime/topic_types.hpp"
+#include "framework/component.hpp"
+#include "msgs/messages.hpp"
+#include "dds/filters/stride_filter.hpp"
+#include "framework/topic_types.hpp"
 
 namespace rt = gdnav::runtime;
 

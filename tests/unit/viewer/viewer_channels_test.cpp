@@ -6,11 +6,11 @@
 #include <cmath>
 #include <memory>
 
-#include "record_file.hpp"
-#include "runtime/messages.hpp"
-#include "viewer_channels.hpp"
-#include "viewer_math.hpp"
-#include "viewer_messages.hpp"
+#include "io/recording/record_file.hpp"
+#include "msgs/messages.hpp"
+#include "io/viewer/viewer_channels.hpp"
+#include "io/viewer/viewer_math.hpp"
+#include "msgs/viewer_messages.hpp"
 
 using namespace gdnav;
 

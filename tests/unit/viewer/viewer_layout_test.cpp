@@ -7,7 +7,7 @@
 #include <set>
 #include <string>
 
-#include "viewer_channels.hpp"
+#include "io/viewer/viewer_channels.hpp"
 
 namespace {
 

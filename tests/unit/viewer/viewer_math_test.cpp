@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "viewer_math.hpp"
+#include "io/viewer/viewer_math.hpp"
 
 using namespace gdnav;
 using math::deg2rad;

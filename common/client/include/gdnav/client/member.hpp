@@ -29,8 +29,8 @@
 #include <string>
 #include <vector>
 
-#include "runtime/component.hpp"
-#include "runtime/messages.hpp"
+#include "framework/component.hpp"
+#include "msgs/messages.hpp"
 
 namespace gdnav::client {
 

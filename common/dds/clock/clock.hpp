@@ -1,0 +1,29 @@
+#pragma once
+// The lockstep clock (a runtime process, not a model): gathers the members, publishes the member table, starts the
+// run when everybody is matched, sends Tick(k) and waits for every live member's StepDone(k), declares silent
+// members dead (wall-clock heartbeat timeout), optionally paces to wall time, and ends the run with STOP or ABORT.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "framework/run_config.hpp"
+
+namespace gdnav::runtime {
+
+struct ClockOptions {
+    std::vector<std::string> members;  // barrier members expected before step 0 (default: all components)
+    bool progress{true};               // log progress lines every ~2 s
+};
+
+class Clock {
+public:
+    Clock(const RunConfig& rc, ClockOptions opt);
+    ~Clock();
+    int run();  // exit code (lockstep.hpp)
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace gdnav::runtime

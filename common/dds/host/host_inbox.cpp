@@ -1,0 +1,88 @@
+#include "dds/host/host_inbox.hpp"
+
+#include <fastdds/dds/core/status/PublicationMatchedStatus.hpp>
+
+#include "dds/host/mirror.hpp"
+
+namespace gdnav::runtime::host {
+
+long inbox_index(const Channel& ch, std::uint64_t next_step, std::uint64_t s) {
+    const auto lag = static_cast<std::uint64_t>(ch.port->lag());
+    const std::uint64_t oldest = next_step >= lag ? next_step - lag : 0;
+    if (s < oldest) return kOlder;
+    if (s >= oldest + kInboxRing) return kTooFar;
+    return static_cast<long>(s % kInboxRing);
+}
+
+void route_locally(std::vector<Local>& locals) {
+    for (auto& producer : locals)
+        for (auto& o : producer.outputs) {
+            o.routes.clear();
+            for (std::size_t c = 0; c < locals.size(); ++c)
+                for (Channel* ch : locals[c].inputs)
+                    if (ch->port->topic() == o.port->topic()) o.routes.push_back({c, ch});
+        }
+}
+
+bool hand_over(const Route& r, const Local& consumer, const void* sample, std::uint64_t s) {
+    Channel& ch = *r.channel;
+    if (ch.free) {
+        ch.ops->copy(ch.latest, sample);
+        ch.has_latest = true;
+        return true;
+    }
+    if (!ch.port->on_stride(s)) return true;  // a step the reader does not read (as the DDS stride filter)
+    if (consumer.observer) ch.saw(s);  // only an observer's lost-step test reads it
+    const long i = inbox_index(ch, consumer.next_step, s);
+    if (i == kOlder) return true;  // no step of the reader needs it (as with a DDS sample)
+    if (i == kTooFar) return false;
+    const auto u = static_cast<std::size_t>(i);
+    ch.ops->copy(ch.slot[u], sample);
+    ch.slot_step[u] = s;
+    ch.full[u] = true;
+    return true;
+}
+
+bool step_missed(const Local& l, std::uint64_t k) {
+    for (const Channel* ch : l.inputs) {
+        if (ch->lost || ch->free) continue;
+        const auto lag = static_cast<std::uint64_t>(ch->port->lag());
+        if (k < lag) continue;
+        const std::uint64_t need = k - lag;
+        if (!ch->port->on_stride(need) || need < ch->lost_until) continue;
+        const std::size_t i = need % kInboxRing;
+        const bool have = ch->full[i] && ch->slot_step[i] == need;
+        if (!have && ch->seen && ch->newest > need) return true;
+    }
+    return false;
+}
+
+namespace {
+
+std::unique_ptr<MatchCount> count_matches(eprosima::fastdds::dds::DataWriter* writer) {
+    auto m = std::make_unique<MatchCount>();
+    writer->set_listener(m.get(), eprosima::fastdds::dds::StatusMask::publication_matched());
+    eprosima::fastdds::dds::PublicationMatchedStatus st;  // matches made before the listener was set
+    writer->get_publication_matched_status(st);
+    m->readers.store(st.current_count);
+    return m;
+}
+
+}  // namespace
+
+Output make_output(OutputBase* port, eprosima::fastdds::dds::DataWriter* writer) {
+    return Output{port, writer, {}, count_matches(writer), nullptr, nullptr};
+}
+
+void add_mirror(Output& o, eprosima::fastdds::dds::DataWriter* mirror) {
+    o.mirror = mirror;
+    o.mirror_matched = count_matches(mirror);
+}
+
+bool mirror_due(const Output& o, std::uint64_t k) {
+    return o.mirror != nullptr && k % kMirrorStride == 0 && o.mirror_matched->readers.load() > 0;
+}
+
+bool read_outside(const Output& o) { return o.matched->readers.load() > static_cast<int>(o.routes.size()); }
+
+}  // namespace gdnav::runtime::host

@@ -1,0 +1,116 @@
+#pragma once
+// The DDS host's per-input inboxes and local members (dds_host.cpp, host/), and the in-process hand-over between members
+// hosted in the same process (issue 13 item 1): a sample written by a local member goes straight into the inboxes of
+// the local members that read it (a copy, no serialisation, no transport, no thread wake-up); it is published on DDS
+// only while a reader outside the process is matched (another process's member, a recorder, a monitoring tool).
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include <fastdds/dds/publisher/DataWriter.hpp>
+#include <fastdds/dds/publisher/DataWriterListener.hpp>
+#include <fastdds/dds/subscriber/DataReader.hpp>
+
+#include "framework/component.hpp"
+#include "framework/faults/input_faults.hpp"
+#include "framework/lateness.hpp"
+#include "framework/lockstep.hpp"
+
+namespace gdnav::runtime::host {
+
+// Inbox of one input port: samples indexed by step (ring), or the latest sample for free-running producers.
+struct Channel {
+    InputBase* port{nullptr};
+    eprosima::fastdds::dds::DataReader* reader{nullptr};
+    const MessageOps* ops{nullptr};
+    void* scratch{nullptr};
+    std::array<void*, kInboxRing> slot{};
+    std::array<std::uint64_t, kInboxRing> slot_step{};
+    std::array<bool, kInboxRing> full{};
+    void* latest{nullptr};
+    bool has_latest{false};
+    std::vector<std::uint32_t> producers;  // member indices in the table
+    bool free{false};                      // produced by a free-running member
+    bool lost{false};                      // every producer declared dead
+    Lateness lateness;                     // free channels: how late the samples used were
+    std::unique_ptr<faults::InputFaults> faults;  // scheduled faults on this input (nullptr: none)
+    std::uint64_t lost_until{0};  // its producer rejoined: samples of steps below this one are lost
+    bool revived{false};
+    bool deferred{false};         // an observer's input: its reader is made at CONFIGURE (runtime/mirror.hpp)
+    bool seen{false};             // a sample has arrived (any step)
+    std::uint64_t newest{0};      // the newest step of the samples arrived (an observer's lost-step test)
+    void saw(std::uint64_t s) {
+        if (!seen || s > newest) newest = s;
+        seen = true;
+    }
+};
+
+// Where a local member's output goes inside the process: the inboxes of the local members that read its topic.
+struct Route {
+    std::size_t consumer{0};  // index into the host's locals
+    Channel* channel{nullptr};
+};
+
+// The matched-reader count of a writer, kept by Fast DDS's matching callback (so the step does not ask for it).
+struct MatchCount final : eprosima::fastdds::dds::DataWriterListener {
+    std::atomic<int> readers{0};
+    void on_publication_matched(eprosima::fastdds::dds::DataWriter*,
+                                const eprosima::fastdds::dds::PublicationMatchedStatus& st) override {
+        readers.store(st.current_count);
+    }
+};
+
+struct Output {
+    OutputBase* port{nullptr};
+    eprosima::fastdds::dds::DataWriter* writer{nullptr};
+    std::vector<Route> routes;  // local readers (their DDS readers are matched too: not counted as outside ones)
+    std::unique_ptr<MatchCount> matched;  // listener of `writer` (outlives it: the host deletes DDS first)
+    // The decimated mirror of the topic for observers (runtime/mirror.hpp; nullptr: none) and its readers.
+    eprosima::fastdds::dds::DataWriter* mirror{nullptr};
+    std::unique_ptr<MatchCount> mirror_matched;
+};
+
+// An output of a local member: its writer, with the matched-reader count kept up to date.
+Output make_output(OutputBase* port, eprosima::fastdds::dds::DataWriter* writer);
+// Gives `o` its mirror writer, with its matched-reader count kept up to date as well.
+void add_mirror(Output& o, eprosima::fastdds::dds::DataWriter* mirror);
+// Whether the mirror is due at step k: a mirror step, and somebody reads the mirror.
+bool mirror_due(const Output& o, std::uint64_t k);
+
+struct Local {
+    Component* comp{nullptr};
+    std::uint32_t index{0};
+    std::uint64_t next_step{0};
+    bool killed{false};            // stopped by a scheduled kill (not stepped until its restart)
+    bool awaiting_rejoin{false};   // --rejoin: not stepped before the clock assigns its first step
+    std::uint64_t restarted_at{UINT64_MAX};
+    std::vector<Channel*> inputs;
+    std::vector<Output> outputs;
+    bool observer{false};          // Component::observer(): not in the barrier, best-effort inputs, skips lost steps
+    std::uint64_t skipped{0};      // observer: steps not computed (a sample lost, or too late for the inbox)
+};
+
+// Observer `l` cannot compute step k any more: an input it reads at k has no sample of that step while a newer one
+// of the same input has arrived (one writer's samples arrive in order, so the missing one was lost).
+bool step_missed(const Local& l, std::uint64_t k);
+
+// Ring index for a sample of step s in `ch`, read by a member whose next step is next_step: kOlder when no step of
+// the member needs it any more, kTooFar when it is beyond the ring.
+inline constexpr long kOlder = -1;
+inline constexpr long kTooFar = -2;
+long inbox_index(const Channel& ch, std::uint64_t next_step, std::uint64_t s);
+
+// Connects every local output to the local inputs of its topic (call once, after all locals are set up).
+void route_locally(std::vector<Local>& locals);
+
+// Hands `sample` (of step s) to local reader `r`: copied into its inbox. Returns false when the reader's ring
+// cannot take it (too far ahead: dropped, as a DDS sample would be).
+bool hand_over(const Route& r, const Local& consumer, const void* sample, std::uint64_t s);
+
+// Whether a reader outside the process is matched with this output's writer (then the sample is also published).
+bool read_outside(const Output& o);
+
+}  // namespace gdnav::runtime::host

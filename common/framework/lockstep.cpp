@@ -1,0 +1,13 @@
+#include "framework/lockstep.hpp"
+
+#include <unistd.h>
+
+namespace gdnav::runtime {
+
+std::string host_identity() {
+    char buf[256] = {};
+    gethostname(buf, sizeof(buf) - 1);
+    return std::string(buf) + ":" + std::to_string(getpid());
+}
+
+}  // namespace gdnav::runtime

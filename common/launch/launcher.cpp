@@ -1,0 +1,321 @@
+#include "launch/launcher.hpp"
+
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+#include <fstream>
+#include <map>
+#include <thread>
+
+#include <spdlog/spdlog.h>
+
+#include "framework/direct_executor.hpp"
+#include "framework/lockstep.hpp"
+#include "dds/process/process_signals.hpp"
+#include "dds/security/security.hpp"
+#include "launch/shm_cleanup.hpp"
+
+namespace gdnav::runtime {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Child {
+    std::string name;
+    pid_t pid{0};
+    bool running{true};
+    int status{0};
+};
+
+pid_t spawn(const fs::path& exe, const std::vector<std::string>& args) {
+    std::vector<char*> argv;
+    argv.push_back(const_cast<char*>(exe.c_str()));
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    const pid_t parent = getpid();
+    const pid_t pid = fork();
+    if (pid < 0) throw std::runtime_error("fork failed");
+    if (pid == 0) {
+        prctl(PR_SET_PDEATHSIG, SIGTERM);  // never outlive the launcher
+        if (getppid() != parent) _exit(1);
+        execv(exe.c_str(), argv.data());
+        _exit(127);
+    }
+    return pid;
+}
+
+std::string describe(int status) {
+    if (WIFEXITED(status)) return "exit code " + std::to_string(WEXITSTATUS(status));
+    if (WIFSIGNALED(status)) return "killed by signal " + std::to_string(WTERMSIG(status));
+    return "status " + std::to_string(status);
+}
+
+void reap(std::vector<Child>& children, const std::function<void(Child&)>& on_exit) {
+    while (true) {
+        int st = 0;
+        const pid_t pid = waitpid(-1, &st, WNOHANG);
+        if (pid <= 0) return;
+        for (auto& c : children)
+            if (c.pid == pid && c.running) {
+                c.running = false;
+                c.status = st;
+                on_exit(c);
+            }
+    }
+}
+
+bool any_running(const std::vector<Child>& cs) {
+    for (const auto& c : cs)
+        if (c.running) return true;
+    return false;
+}
+
+void signal_all(std::vector<Child>& cs, int sig) {
+    for (auto& c : cs)
+        if (c.running) kill(c.pid, sig);
+}
+
+// Waits up to `seconds` for all children; returns true when none is left.
+bool wait_all(std::vector<Child>& cs, double seconds, const std::function<void(Child&)>& on_exit) {
+    const double end = steady_now_s() + seconds;
+    while (any_running(cs) && steady_now_s() < end) {
+        reap(cs, on_exit);
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    reap(cs, on_exit);
+    return !any_running(cs);
+}
+
+}  // namespace
+
+int run_direct(const RunConfig& rc, const ComponentRegistry& reg, bool progress, double* steps_per_s) {
+    auto comps = rc.build(reg);
+    DirectExecutor ex(std::move(comps), rc.info);
+    ex.set_faults(rc.faults, [&rc, &reg](const std::string& name) { return rc.build_one(reg, name); });
+    // An essential member killed by a scheduled fault ends the run at that step, as the clock does.
+    std::uint64_t abort_at = rc.info.steps;
+    std::string abort_reason;
+    for (const auto& f : rc.faults.faults())
+        if (f.kind == faults::Kind::Kill && f.from_step < abort_at &&
+            std::find(rc.essential.begin(), rc.essential.end(), f.target) != rc.essential.end()) {
+            abort_at = f.from_step;
+            abort_reason = "essential member '" + f.target + "' killed by a scheduled fault at step " +
+                           std::to_string(f.from_step);
+        }
+    install_stop_signal_handlers();
+    const double t0 = steady_now_s();
+    double next_log = t0 + 2.0;
+    const std::uint64_t done = ex.run(
+        [&](std::uint64_t k) {
+            if (abort_at < rc.info.steps && k >= abort_at) return false;
+            if (stop_requested()) return false;
+            if (!progress) return true;
+            const double now = steady_now_s();
+            if (now < next_log) return true;
+            next_log = now + 2.0;
+            const double sps = static_cast<double>(k) / (now - t0);
+            spdlog::info("step {}/{} ({:.0f}%), t = {:.1f} s, {:.0f} steps/s, {:.0f}x real time", k, rc.info.steps,
+                         100.0 * static_cast<double>(k) / static_cast<double>(rc.info.steps), rc.info.time_of(k), sps,
+                         sps * rc.info.dt_s);
+            return true;
+        },
+        abort_at < rc.info.steps ? 1 : 100);
+    if (done == abort_at && abort_at < rc.info.steps) {
+        spdlog::error("run aborted: {}", abort_reason);
+        if (!rc.out_dir.empty()) {
+            std::ofstream f(fs::path(rc.out_dir) / "clock_summary.yaml");
+            f << "completed: false\nsteps_done: " << done << "\nabort_reason: \"" << abort_reason
+              << "\"\ndead_members: []\nreproducible: true\n";
+        }
+        return kExitAborted;
+    }
+    if (done < rc.info.steps) {
+        spdlog::error("run interrupted by signal {} at step {}", stop_signal(), done);
+        return kExitInterrupted;
+    }
+    const double wall = steady_now_s() - t0;
+    const double sps = static_cast<double>(rc.info.steps) / std::max(wall, 1e-9);
+    if (steps_per_s) *steps_per_s = sps;
+    if (progress)
+        spdlog::info("run complete: {} steps in {:.2f} s ({:.0f} steps/s, {:.0f}x real time)", rc.info.steps, wall, sps,
+                     sps * rc.info.dt_s);
+    if (!rc.out_dir.empty()) {
+        std::ofstream f(fs::path(rc.out_dir) / "clock_summary.yaml");
+        f << "completed: true\nsteps_done: " << rc.info.steps << "\nwall_s: " << wall << "\nsteps_per_s: " << sps
+          << "\ndead_members: []\nreproducible: true\n";
+    }
+    return kExitOk;
+}
+
+int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& opt) {
+    if (opt.layout != "direct" && opt.layout != "composed" && opt.layout != "distributed")
+        throw config::ConfigError("unknown layout '" + opt.layout + "' (allowed: direct, composed, distributed)");
+    if (opt.layout == "direct" && !rc.external.empty())
+        throw config::ConfigError("config error: " + rc.origin +
+                                  ": key 'run.external': external members need the lockstep clock; use --layout "
+                                  "composed or distributed (the direct layout has no transport)");
+    if (!rc.domain_given) {
+        rc.domain_id = static_cast<int>(getpid() % 200) + 20;
+        RunOverrides o;
+        o.domain_id = rc.domain_id;
+        const std::string faults_origin = rc.faults_origin;  // errors keep naming the file the faults came from
+        rc = RunConfig::parse(rc.to_yaml(), rc.origin, o);
+        rc.faults_origin = faults_origin;
+    }
+    // Validate everything before anything starts: build (construct + configure) every component.
+    (void)rc.build(reg);
+    fs::create_directories(rc.out_dir);
+    const fs::path run_yaml = fs::path(rc.out_dir) / "run.yaml";
+    {
+        std::ofstream f(run_yaml);
+        f << "# Resolved run configuration written by gdnav run (layout " << opt.layout << ")\n" << rc.to_yaml();
+    }
+    spdlog::info("run {} seed {} layout {}: {} steps of {} s -> {}", rc.info.run_index, rc.info.seed, opt.layout,
+                 rc.info.steps, rc.info.dt_s, rc.out_dir);
+    if (opt.layout == "direct") {
+        if (!rc.security_dir.empty())
+            spdlog::warn("run.security is ignored in the direct layout (one process, no DDS)");
+        return run_direct(rc, reg, true);
+    }
+    if (!rc.security_dir.empty() && opt.layout == "distributed")
+        throw config::ConfigError(
+            "config error: " + rc.origin + ": key 'run.security': not with --layout distributed: Fast DDS 2.9.1 "
+            "(Debian 12) leaves some secure endpoints unmatched when more than about 3 participants start together "
+            "(measured in docs/deployment.md); use --layout composed (the clock and one process)");
+    if (!rc.security_dir.empty()) {
+        // Every identity this run starts must be valid before any process starts (one clear error otherwise).
+        std::vector<std::string> identities{security::kClockIdentity};
+        std::vector<std::string> hosted;
+        for (const auto& m : rc.members)
+            if (!rc.is_external(m.name)) {
+                if (opt.layout == "distributed") identities.push_back(m.name);
+                hosted.push_back(m.name);
+            }
+        if (opt.layout == "composed" && !hosted.empty()) identities.push_back(security::process_identity(hosted));
+        for (const auto& id : identities) security::check_identity(rc.security_dir, id);
+        spdlog::info("DDS Security on: {} identities from {} checked (authentication, access control, AES-GCM)",
+                     identities.size(), rc.security_dir.string());
+    }
+
+    const fs::path exe = opt.exe.empty() ? fs::read_symlink("/proc/self/exe") : opt.exe;
+    const std::time_t started = std::time(nullptr) - 1;
+    std::vector<Child> children;
+    const std::vector<std::string> common{"--config", run_yaml.string(), "--log-level", opt.log_level};
+    auto args = [&](std::vector<std::string> a) {
+        a.insert(a.end(), common.begin(), common.end());
+        return a;
+    };
+    install_stop_signal_handlers();
+    std::vector<Child> services;
+    for (const auto& [name, argv] : opt.services) {
+        std::vector<std::string> rest(argv.begin() + 1, argv.end());
+        services.push_back({name, spawn(argv.front(), rest)});
+        spdlog::info("started {} (pid {}): {}", name, services.back().pid, [&] {
+            std::string c;
+            for (const auto& a : argv) c += (c.empty() ? "" : " ") + a;
+            return c;
+        }());
+    }
+    // The members this process starts: all (not external), or this host's slice of a plan.
+    auto here = [&](const std::string& name) {
+        if (rc.is_external(name)) return false;
+        return !opt.slice || std::find(opt.only.begin(), opt.only.end(), name) != opt.only.end();
+    };
+    if (opt.start_clock) children.push_back({kClockName, spawn(exe, args({"clock"}))});
+    if (opt.layout == "distributed") {
+        for (const auto& m : rc.members)
+            if (here(m.name)) children.push_back({m.name, spawn(exe, args({"component", m.name}))});
+    } else {
+        std::string all;
+        for (const auto& m : rc.members)
+            if (here(m.name)) all += (all.empty() ? "" : ",") + m.name;
+        if (!all.empty()) children.push_back({"composed", spawn(exe, args({"component", all}))});
+    }
+    if (!rc.external.empty()) {
+        std::string names;
+        for (const auto& n : rc.external) names += (names.empty() ? "" : ", ") + n;
+        spdlog::info("external member(s) {} are not started by gdnav: start them on DDS domain {} with run id {} "
+                     "(e.g. `--domain {} --run {}`); waiting up to {:.0f} s",
+                     names, rc.domain_id, rc.info.run_index, rc.domain_id, rc.info.run_index, rc.join_timeout_s);
+    }
+    {
+        std::ofstream f(fs::path(rc.out_dir) / "processes.yaml");
+        for (const auto& c : children) f << c.name << ": " << c.pid << "\n";
+    }
+
+    int clock_code = -1;
+    std::vector<std::string> failures;
+    auto on_exit = [&](Child& c) {
+        const bool ok = WIFEXITED(c.status) && WEXITSTATUS(c.status) == 0;
+        if (c.name == kClockName) clock_code = WIFEXITED(c.status) ? WEXITSTATUS(c.status) : 128 + WTERMSIG(c.status);
+        if (!ok) {
+            failures.push_back(c.name + " (" + describe(c.status) + ")");
+            spdlog::warn("process '{}' (pid {}) ended: {}", c.name, c.pid, describe(c.status));
+        }
+    };
+    bool interrupted = false;
+    while (any_running(children)) {
+        reap(children, on_exit);
+        if (stop_requested() && !interrupted) {
+            interrupted = true;
+            spdlog::warn("interrupted: stopping all processes of the run");
+            signal_all(children, SIGTERM);
+            if (!wait_all(children, 3.0, on_exit)) signal_all(children, SIGKILL);
+        }
+        if (clock_code >= 0 && any_running(children)) {
+            // The clock is gone: members exit by themselves within member_timeout_s; then enforce it.
+            if (!wait_all(children, rc.member_timeout_s + 3.0, on_exit)) {
+                spdlog::warn("members still running after the clock ended; terminating them");
+                signal_all(children, SIGTERM);
+                if (!wait_all(children, 2.0, on_exit)) signal_all(children, SIGKILL);
+            }
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    reap(children, on_exit);
+    if (!services.empty()) {
+        signal_all(services, SIGTERM);
+        if (!wait_all(services, 3.0, [](Child&) {})) signal_all(services, SIGKILL);
+        reap(services, [](Child&) {});
+    }
+    const auto removed = clean_fastdds_shm(started);
+    if (!removed.empty()) spdlog::info("removed {} Fast DDS shared-memory files left by the run", removed.size());
+    if (interrupted) {
+        spdlog::error("run interrupted");
+        return kExitInterrupted;
+    }
+    if (!opt.start_clock) {  // a plan host without the clock: its own processes decide
+        if (!failures.empty()) {
+            std::string s;
+            for (const auto& f : failures) s += (s.empty() ? "" : ", ") + f;
+            spdlog::error("host slice failed: {}", s);
+            return 1;
+        }
+        spdlog::info("host slice completed; results in {}", rc.out_dir);
+        return kExitOk;
+    }
+    if (clock_code != kExitOk) {
+        spdlog::error("run failed: the clock ended with code {}{}", clock_code,
+                      failures.empty() ? "" : "; failed processes: " + [&] {
+                          std::string s;
+                          for (const auto& f : failures) s += (s.empty() ? "" : ", ") + f;
+                          return s;
+                      }());
+        return clock_code > 0 ? clock_code : 1;
+    }
+    if (!failures.empty()) {
+        std::string s;
+        for (const auto& f : failures) s += (s.empty() ? "" : ", ") + f;
+        spdlog::warn("run completed without: {}", s);
+    }
+    spdlog::info("run completed; results in {}", rc.out_dir);
+    return kExitOk;
+}
+
+}  // namespace gdnav::runtime

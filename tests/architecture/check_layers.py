@@ -1,0 +1,169 @@
+#!/usr/bin/env python3
+"""The layering rule of docs/architecture.md, checked on the source tree: a layer includes and links only the layers
+it stands on. Usage: check_layers.py SOURCE_DIR [GENERATED_INCLUDE_DIR]. Prints every violation, exits 1 on any.
+
+Layers, by folder (lowest first; a layer may use those listed for it):
+  core        common/core                 -
+  msgs        idl                         -
+  framework   common/framework            core msgs
+  models      components/*/model          core models
+  dds         common/dds                  framework core msgs
+  io          common/io                   framework core msgs
+  launch      common/launch               dds io framework core msgs
+  client      common/client               dds framework core msgs
+  components  components/* (wrappers)     io framework core msgs models components
+  scenarios   scenarios                   framework core msgs models
+  app         app                         everything above
+Also: framework/component.hpp (what every component includes) compiles without any Fast DDS header."""
+import os
+import re
+import subprocess
+import sys
+
+ALLOWED = {
+    'core': set(),
+    'msgs': set(),
+    'framework': {'core', 'msgs'},
+    'models': {'core'},
+    'dds': {'framework', 'core', 'msgs'},
+    'io': {'framework', 'core', 'msgs'},
+    'launch': {'dds', 'io', 'framework', 'core', 'msgs'},
+    'client': {'dds', 'framework', 'core', 'msgs'},
+    'components': {'io', 'framework', 'core', 'msgs', 'models'},
+    'scenarios': {'framework', 'core', 'msgs', 'models'},
+    'app': {'launch', 'client', 'dds', 'io', 'framework', 'core', 'msgs', 'models', 'components', 'scenarios'},
+}
+# Files generated at build time from the IDL (fastddsgen, cmake/GdnavIdl.cmake): the message layer.
+GENERATED = re.compile(r'^[A-Za-z_]+(PubSubTypes)?\.h$')
+SOURCE_EXT = ('.cpp', '.hpp', '.h')
+
+
+def layer_of(rel):
+    parts = rel.split('/')
+    if parts[0] == 'idl':
+        return 'msgs'
+    if parts[0] == 'common' and len(parts) > 2:
+        return {'core': 'core', 'framework': 'framework', 'dds': 'dds', 'io': 'io', 'launch': 'launch',
+                'client': 'client'}.get(parts[1])
+    if parts[0] == 'components' and len(parts) > 2:
+        return 'models' if parts[2] == 'model' else 'components'
+    if parts[0] in ('scenarios', 'app'):
+        return parts[0]
+    return None
+
+
+def product_files(root):
+    for top in ('idl', 'common', 'components', 'scenarios', 'app'):
+        for dp, _, fn in os.walk(os.path.join(root, top)):
+            for f in fn:
+                if f.endswith(SOURCE_EXT):
+                    yield os.path.relpath(os.path.join(dp, f), root)
+
+
+def include_roots(root):
+    roots = ['common/core', 'common', 'idl', 'components', 'scenarios', 'app', 'common/client/include']
+    roots += [os.path.join('components', d) for d in sorted(os.listdir(os.path.join(root, 'components')))]
+    return roots
+
+
+def resolve(root, rel, inc, roots):
+    for base in [os.path.dirname(rel)] + roots:
+        cand = os.path.normpath(os.path.join(base, inc))
+        if os.path.isfile(os.path.join(root, cand)):
+            return cand
+    return None
+
+
+def check_includes(root):
+    errors = []
+    roots = include_roots(root)
+    for rel in product_files(root):
+        me = layer_of(rel)
+        if me is None:
+            continue
+        with open(os.path.join(root, rel), encoding='utf-8') as f:
+            for n, line in enumerate(f, 1):
+                m = re.match(r'\s*#\s*include\s+"([^"]+)"', line)
+                if not m:
+                    continue
+                inc = m.group(1)
+                target = resolve(root, rel, inc, roots)
+                if target is None:
+                    if GENERATED.match(os.path.basename(inc)):
+                        other = 'msgs'
+                    else:
+                        errors.append(f'{rel}:{n}: cannot resolve #include "{inc}"')
+                        continue
+                else:
+                    other = layer_of(target)
+                if other is None or other == me:
+                    continue
+                if other not in ALLOWED[me]:
+                    errors.append(f'{rel}:{n}: {me} includes {other} ("{inc}")')
+    return errors
+
+
+def cmake_targets(root):
+    """target -> (layer, [linked names]) from add_library/add_executable and target_link_libraries."""
+    defined, links = {}, {}
+    for rel in product_files_cmake(root):
+        text = open(os.path.join(root, rel), encoding='utf-8').read()
+        text = re.sub(r'#[^\n]*', '', text)
+        layer = layer_of(os.path.dirname(rel) + '/CMakeLists.txt') if os.path.dirname(rel) else None
+        for m in re.finditer(r'(?:add_library|add_executable|gdnav_idl_library)\(\s*([A-Za-z0-9_]+)', text):
+            defined[m.group(1)] = layer
+        for m in re.finditer(r'target_link_libraries\(\s*([A-Za-z0-9_]+)([^)]*)\)', text):
+            names = [w for w in m.group(2).split() if w.startswith('gdnav_')]
+            links.setdefault(m.group(1), []).extend(names)
+    return defined, links
+
+
+def product_files_cmake(root):
+    for top in ('idl', 'common', 'components', 'scenarios', 'app'):
+        for dp, _, fn in os.walk(os.path.join(root, top)):
+            if 'CMakeLists.txt' in fn:
+                yield os.path.relpath(os.path.join(dp, 'CMakeLists.txt'), root)
+
+
+def check_links(root):
+    errors = []
+    defined, links = cmake_targets(root)
+    for target, names in sorted(links.items()):
+        me = defined.get(target)
+        if me is None:
+            continue
+        for name in names:
+            other = defined.get(name)
+            if other is None or other == me:
+                continue
+            if other not in ALLOWED[me]:
+                errors.append(f'CMake: {target} ({me}) links {name} ({other})')
+    return errors
+
+
+def check_component_header(root, generated):
+    cmd = ['c++', '-std=c++20', '-M', '-x', 'c++', '-I', os.path.join(root, 'common/core'), '-I',
+           os.path.join(root, 'common'), '-I', os.path.join(root, 'idl'), '-isystem', '/usr/include/eigen3']
+    if generated:
+        cmd += ['-isystem', generated]
+    cmd.append(os.path.join(root, 'common/framework/component.hpp'))
+    out = subprocess.run(cmd, capture_output=True, text=True)
+    if out.returncode != 0:
+        return ['framework/component.hpp does not compile on its own: ' + out.stderr.strip().splitlines()[0]]
+    dds = [w for w in out.stdout.split() if '/fastdds/' in w or '/fastrtps/' in w]
+    return [f'framework/component.hpp pulls Fast DDS headers: {dds[0]} ...'] if dds else []
+
+
+def main():
+    root = os.path.abspath(sys.argv[1])
+    generated = sys.argv[2] if len(sys.argv) > 2 else None
+    errors = check_includes(root) + check_links(root) + check_component_header(root, generated)
+    for e in errors:
+        print(e)
+    n_files = sum(1 for _ in product_files(root))
+    print(f'layers: {n_files} product files, {len(errors)} violation(s)')
+    return 1 if errors else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
