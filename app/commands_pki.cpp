@@ -1,4 +1,4 @@
-// gdnav pki init: the DDS Security directory of a run (common/runtime/security, docs/deployment.md "Security").
+// gdnav pki init: the DDS Security directory of a run (common/dds/security, docs/deployment.md "Security").
 // Identities: the clock (Tick, RunControl, ComponentStatus), `operator` (FaultRequest, for gdnav fault), every
 // configured member of the scenario (its output topics, StepDone, ComponentStatus), `composed` (every member's
 // outputs: the process of the composed layout), `recorder` (added by gdnav run --record) and any --member NAME=TOPIC,... (an external member).

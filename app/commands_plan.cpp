@@ -1,5 +1,5 @@
 // gdnav host --plan PLAN --name H, and gdnav run --plan PLAN (the clock's host): one host's slice of a deployment
-// plan (runtime/deploy/plan.hpp, docs/deployment.md "Plans"). Every host resolves the same run from the plan (same
+// plan (launch/plan/plan.hpp, docs/deployment.md "Plans"). Every host resolves the same run from the plan (same
 // scenario, seed, domain and overrides), writes the plan's Fast DDS XML (discovery from the plan, no hand-edited
 // addresses) into its output directory, starts the discovery server(s) the plan puts on it, and starts and
 // supervises its own members (exit codes, clean-up, Ctrl-C) through the launcher.

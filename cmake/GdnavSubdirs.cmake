@@ -1,5 +1,5 @@
 # gdnav_add_subdirectories(): adds every direct sub-folder that holds a CMakeLists.txt, in sorted order,
-# so that each area (common/earth, components/nav_att, tests/unit/…) owns its own build file.
+# so that each area (common/core/earth, components/nav_att, tests/unit/…) owns its own build file.
 # GDNAV_SKIP_DIRS: folder names to leave out (a developer's partial build), empty by default.
 set(GDNAV_SKIP_DIRS "" CACHE STRING "Sub-folder names to skip")
 macro(gdnav_add_subdirectories)

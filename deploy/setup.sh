@@ -19,7 +19,7 @@ packages=(
   cyclonedds-dev cyclonedds-tools
   libeigen3-dev libyaml-cpp-dev libspdlog-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev libgeographiclib-dev libhdf5-dev libzstd-dev
-  libwebsocketpp-dev libasio-dev nlohmann-json3-dev  # the live view (gdnav run --live: common/foxglove_ws)
+  libwebsocketpp-dev libasio-dev nlohmann-json3-dev  # the live view (gdnav run --live: common/io/foxglove_ws)
   libopenmpi-dev openmpi-bin
   python3 python3-numpy python3-matplotlib python3-h5py python3-plotly python3-dev pybind11-dev
   libssl-dev openssl

@@ -14,7 +14,7 @@
 namespace gdnav::client {
 
 // The member as a runtime component: its ports are the user's, its step calls the user's callback. The DDS host
-// that runs it is the one every built-in member runs in (common/runtime/dds_host.cpp and host/), so the protocol is the same.
+// that runs it is the one every built-in member runs in (common/dds/host/dds_host.cpp and host/), so the protocol is the same.
 class Member::Adapter final : public runtime::Component {
 public:
     using Component::Component;

@@ -30,7 +30,7 @@ inline constexpr const char* kLatchedReaderProfile = "gdnav_latched_reader";
 
 class DdsContext {
 public:
-    // security_dir empty: a plain participant; else DDS Security on with `identity` (runtime/security/security.hpp).
+    // security_dir empty: a plain participant; else DDS Security on with `identity` (dds/security/security.hpp).
     DdsContext(int domain_id, const std::filesystem::path& profile_file, const std::string& name,
                const std::filesystem::path& security_dir = {}, const std::string& identity = {});
     ~DdsContext();
@@ -39,11 +39,11 @@ public:
 
     eprosima::fastdds::dds::DataWriter* writer(const std::string& topic, const MessageOps& ops, const char* profile);
     // stride > 1: the reader gets only the samples of steps k % stride == 0, filtered by the writers where they can
-    // (runtime/stride_filter.hpp). best_effort: the profile's QoS with BEST_EFFORT reliability (an observer's
+    // (dds/filters/stride_filter.hpp). best_effort: the profile's QoS with BEST_EFFORT reliability (an observer's
     // inputs, Component::observer(): no acknowledgements or resends, a lost sample stays lost).
     eprosima::fastdds::dds::DataReader* reader(const std::string& topic, const MessageOps& ops, const char* profile,
                                                std::uint64_t stride = 1, bool best_effort = false);
-    // A reader of `topic` (ComponentStatus) that gets only the statuses of `member` (runtime/status_filter.hpp).
+    // A reader of `topic` (ComponentStatus) that gets only the statuses of `member` (dds/filters/status_filter.hpp).
     eprosima::fastdds::dds::DataReader* status_reader(const std::string& topic, const MessageOps& ops,
                                                       const char* profile, const std::string& member);
     [[nodiscard]] eprosima::fastdds::dds::DomainParticipant* participant() const { return participant_; }

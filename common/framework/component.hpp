@@ -72,8 +72,8 @@ public:
     // Stride: the member reads only the samples of steps k with k % stride == 0 (k of the sample: k - 1 for
     // Lag::Previous); at the other steps the input is absent and never waited for. Set before the member is hosted.
     // Over DDS the reader asks the producers' writers to send only those steps (a writer-side content filter,
-    // runtime/stride_filter.hpp), so the member does not receive the samples between; an observer's input at stride
-    // 10 reads the producers' decimated mirror of the topic instead where they write one (runtime/mirror.hpp).
+    // dds/filters/stride_filter.hpp), so the member does not receive the samples between; an observer's input at stride
+    // 10 reads the producers' decimated mirror of the topic instead where they write one (dds/host/mirror.hpp).
     // set_stride(N) (a member that uses every N-th step) takes the largest divisor of N in [kMinStride, kMaxStride],
     // or 1 (every sample) when N has none. Why these bounds: with Fast DDS 2.9.1 a writer that filters for a reader
     // still sends it GAP/HEARTBEAT traffic for the skipped samples, and how much depends on the stride. Measured

@@ -1,7 +1,7 @@
 #pragma once
 // Direct layout: every component in one thread, called in graph order, inputs bound straight to the producers'
 // output buffers (Lag::Previous inputs to a copy of step k-1). No transport, no allocation per step.
-// Scheduled faults (set_faults): inputs pass through runtime/faults/input_faults.hpp; a killed member is not
+// Scheduled faults (set_faults): inputs pass through framework/faults/input_faults.hpp; a killed member is not
 // stepped; a restarted one is created anew with the factory and bound in place of the old one.
 #include <functional>
 #include <map>

@@ -15,18 +15,18 @@
 //     window_steps: 16         # how far a member may run ahead of the last Tick (0 = strict lockstep;
 //                              # forced to 0 when realtime > 0); see docs/runtime.md
 //     observer_nice: 19        # nice value (0..19) of a process that hosts only observers (e.g. the live bridge in
-//                              # the distributed layout); 0 = the run's own priority (runtime/process_priority.hpp)
+//                              # the distributed layout); 0 = the run's own priority (dds/process/process_priority.hpp)
 //     essential: [plant]       # members whose loss aborts the run
 //     external: [nav_att]      # members run outside gdnav (not started; waited for; docs/protocol.md)
 //     join_timeout_s: 60       # wall-clock wait for external members before step 0
 //     domain_id: 0             # DDS domain (the launcher picks a free one when absent)
 //     dds_profile: dds/gdnav_profiles.xml   # relative to the config directory
 //     security: pki/             # DDS Security directory (gdnav pki init; relative to the working directory);
-//                                # absent = no security (runtime/security/security.hpp, docs/deployment.md)
+//                                # absent = no security (dds/security/security.hpp, docs/deployment.md)
 //     out_dir: out/run
 //   components:
 //     plant: {type: chain_plant, ...component parameters...}
-//   faults:                    # optional: scheduled faults (runtime/faults/fault_schedule.hpp, docs/faults.md)
+//   faults:                    # optional: scheduled faults (framework/faults/fault_schedule.hpp, docs/faults.md)
 //     - {at_s: 10, until_s: 20, target: plant, kind: drop}
 #include <cstdint>
 #include <filesystem>

@@ -20,7 +20,7 @@ struct LaunchOptions {
     std::string layout{"distributed"};  // direct | composed | distributed
     std::filesystem::path exe;          // program to start for members (default: /proc/self/exe)
     std::string log_level{"info"};
-    // One host's slice of a deployment plan (runtime/deploy/plan.hpp): start only these members (the others run on
+    // One host's slice of a deployment plan (launch/plan/plan.hpp): start only these members (the others run on
     // other hosts) and the clock only when start_clock. Empty `only` = every member that is not external.
     std::vector<std::string> only;
     bool slice{false};

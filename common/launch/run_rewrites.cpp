@@ -66,7 +66,7 @@ YAML::Node sequence(const std::vector<std::string>& v) {
 }
 
 
-// `viewer` in --record: the recorder's viewer channels (components/viewer; docs/viewing.md), with or without topics.
+// `viewer` in --record: the recorder's viewer channels (common/io/viewer; docs/viewing.md), with or without topics.
 constexpr const char* kViewerKeyword = "viewer";
 
 // The names without `viewer`, and whether it was among them.

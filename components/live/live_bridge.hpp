@@ -1,12 +1,12 @@
 #pragma once
-// live: streams a run to Foxglove / Lichtblick over the Foxglove WebSocket protocol (common/foxglove_ws;
-// docs/viewing.md "Live view"). Added by `gdnav run --live [PORT]` (app/run_rewrites.cpp) or declared in a scenario:
+// live: streams a run to Foxglove / Lichtblick over the Foxglove WebSocket protocol (common/io/foxglove_ws;
+// docs/viewing.md "Live view"). Added by `gdnav run --live [PORT]` (common/launch/run_rewrites.cpp) or declared in a scenario:
 //
 //   live: {type: live, topics: [gdnav/Truth, ...], viewer: true, viewer_decimation: 10, port: 8765,
 //          bind: 127.0.0.1, decimation: 10, max_pending_kib: 1024, queue_steps: 64}
 //
 //   topics           topics streamed (default: every data topic), one channel each, as in the recording
-//   viewer           also the viewer channels (components/viewer; default false), every viewer_decimation steps
+//   viewer           also the viewer channels (common/io/viewer; default false), every viewer_decimation steps
 //   port, bind       where the WebSocket server listens (bind: an IPv4/IPv6 address or localhost; default loopback
 //                    only); checked when the member is configured (a port in use is a configuration error)
 //   decimation       stream the topics every N-th step (k % N == 0; default 10, 10 Hz at dt = 0.01 s)
@@ -22,7 +22,7 @@
 // Its inputs have a stride (InputBase::set_stride of the topics' decimation, the viewer's, or both's greatest common
 // divisor for an input both use; the stride is a divisor of that, from 4 to 10, or 1), so over DDS the producers
 // send it one sample per stride, which includes every step it streams (at stride 10 through their decimated mirrors
-// of the topics, runtime/mirror.hpp, where they write them).
+// of the topics, dds/host/mirror.hpp, where they write them).
 //
 // Adding channels: implement a ChannelSource (channel_source.hpp: channels() and encode(), as TopicChannels and
 // ViewerSource do) and append it to `sources_` in configure(); the bridge gives it the next channel ids, advertises

@@ -1,5 +1,5 @@
 #pragma once
-// The raw gdnav topics as live channels, exactly as the recording's channels (components/recorder/record_file.hpp):
+// The raw gdnav topics as live channels, exactly as the recording's channels (common/io/recording/record_file.hpp):
 // topic = the gdnav topic name, message encoding `cdr`, schema encoding `omgidl`, schema name = the fully-qualified
 // IDL type, schema = the text of idl/gdnav.idl (runtime::topic_schema_idl); each message = the sample's CDR
 // encoding with its encapsulation header (runtime::MessageOps::serialize, as the recorder writes it).

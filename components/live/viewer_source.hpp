@@ -1,5 +1,5 @@
 #pragma once
-// The viewer channels (components/viewer: foxglove LocationFix / FrameTransform of the true and estimated state,
+// The viewer channels (common/io/viewer: foxglove LocationFix / FrameTransform of the true and estimated state,
 // gdnav NavErrors) as live channels, the same channels as a recording made with `--record ...,viewer`.
 // ViewerChannels::encode() runs from the first step until it has seen a true position (its ENU origin, as in the
 // recording), then only while some client is subscribed (it computes messages every `decimation` steps); the

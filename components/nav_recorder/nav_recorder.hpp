@@ -1,8 +1,8 @@
 #pragma once
 // nav_recorder: Truth + AirDataEstimate + AttitudeEstimate + PositionEstimate (+ GnssSample) of step k -> files.
 //
-// Every step (100 Hz) it computes the navigation errors (common/metrics/nav_errors.hpp) and updates the per-run
-// metrics online (common/metrics/run_metrics.hpp: mean, population std, signed max and final value of each error
+// Every step (100 Hz) it computes the navigation errors (common/core/metrics/nav_errors.hpp) and updates the per-run
+// metrics online (common/core/metrics/run_metrics.hpp: mean, population std, signed max and final value of each error
 // over t in [0, t_end]; true ground distance since t_GNSS). Every `decimation` steps it records one row of truth,
 // estimate and error. Files in RunInfo::out_dir (nothing is written when it is empty):
 //
@@ -12,7 +12,7 @@
 //                   root attributes: format = "gdnav-nav-record", format_version, complete (0 until a normal end),
 //                   seed, run_index, dt_s, t0_s, decimation, t_gnss_s, steps_planned, steps_recorded,
 //                   lat0_rad, lon0_rad, distance_since_gnss_m
-//   metrics.yaml  the per-run record (common/metrics/run_record.hpp); `complete: true` only after a normal end
+//   metrics.yaml  the per-run record (common/core/metrics/run_record.hpp); `complete: true` only after a normal end
 //
 // Rows are buffered and written every `flush_rows` rows (HDF5 flush + metrics.yaml with complete: false), so a
 // killed run leaves a readable file holding everything up to the last flush, marked complete = 0.

@@ -4,7 +4,7 @@
 //   recorder: {type: recorder, topics: [gdnav/ImuSample, ...], decimation: 1, chunk_kib: 1024,
 //              viewer: false, viewer_decimation: 10}
 //
-// viewer: true adds the viewer channels (components/viewer/viewer_channels.hpp: Foxglove LocationFix and
+// viewer: true adds the viewer channels (common/io/viewer/viewer_channels.hpp: Foxglove LocationFix and
 // FrameTransform of the true and estimated state, the navigation errors) every `viewer_decimation` steps; the run
 // then needs producers of Truth and the three estimates. `topics` may be empty when viewer is true.
 //

@@ -24,7 +24,7 @@
 
 namespace gdnav::replay {
 
-// The record files are the recorder's format (components/recorder/record_file.hpp).
+// The record files are the recorder's format (common/io/recording/record_file.hpp).
 using recorder::SampleDecoder;
 using recorder::TopicRecord;
 

@@ -53,7 +53,7 @@ struct Held {
 
 struct State {
     Options opt;
-    gdnav::rnd::Stream rng;  // gdnav's own generator (common/random), seeded with --seed
+    gdnav::rnd::Stream rng;  // gdnav's own generator (common/core/random), seeded with --seed
     nfq_q_handle* qh{nullptr};
     std::priority_queue<Held, std::vector<Held>, std::greater<>> held;
     std::uint64_t packets{0}, dropped{0}, reordered{0}, delayed{0};

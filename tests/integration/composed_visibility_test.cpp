@@ -1,5 +1,5 @@
 // Issue 13 item 1: in the composed layout the members of one process hand samples to each other in process
-// (runtime/host/host_inbox.hpp), and a topic is published on DDS only while a reader outside the process is matched.
+// (dds/host/host_inbox.hpp), and a topic is published on DDS only while a reader outside the process is matched.
 // This test is such an outside reader (a monitoring tool that is not a member of the run): it must see the
 // composed run's ImuSample topic on DDS, step after step up to the last one. (That the in-process hand-over gives
 // the same results as the other layouts is the Layouts, Flight and ScheduledFaults tests' bit-identity check.)

@@ -1,5 +1,5 @@
 // Issue 11, items 2 and 5 at scenario level: the position filter's GNSS integrity and the filters' input checks in
-// full paper scenario-#2 runs (direct layout, 500 s, ~1-2 s each), driven by scheduled faults (runtime/faults,
+// full paper scenario-#2 runs (direct layout, 500 s, ~1-2 s each), driven by scheduled faults (framework/faults,
 // docs/faults.md) and read from the run's log, its ComponentStatus MODE messages and its run.h5 (nav_recorder):
 //   * an outage that ends: GNSS kept (`never_lost`) but every sample dropped in [100.5, 300) s, seeds 1-3: lost at
 //     101.51 s (last fix 100 s + the 1.5 s timeout), re-acquired at 304 s (5 consistent fixes at 1 Hz from 300 s),

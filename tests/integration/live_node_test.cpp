@@ -77,7 +77,7 @@ TEST(LiveNode, ClientDuringDistributedRunDecodesTheRecordedValues) {
     ASSERT_GT(port, 0);
     const fs::path out = temp_dir("live-node");
     // Scenario #2, 3000 steps paced at 5x real time (6 s: time to connect), topics every 10th step (the default
-    // decimation: the bridge reads the producers' decimated mirrors, runtime/mirror.hpp), the recording of every
+    // decimation: the bridge reads the producers' decimated mirrors, dds/host/mirror.hpp), the recording of every
     // data topic in the same run.
     const pid_t run_pid = start({GDNAV_GDNAV_EXE, "run", "--scenario", "paper2", "--seed", "1", "--steps", "3000",
                                  "--layout", "distributed", "--realtime", "5", "--record", "all", "--live",

@@ -1,4 +1,4 @@
-// Decimated mirrors over real DDS (runtime/mirror.hpp, docs/protocol.md §2.2): during a distributed run with the
+// Decimated mirrors over real DDS (dds/host/mirror.hpp, docs/protocol.md §2.2): during a distributed run with the
 // live view at its default decimation,
 //  * the live bridge's data readers are all on the mirrors (`<topic>/every_10_steps`), none on a topic itself — so
 //    the producers' writers of the topics the run steps on do not deliver to it (seen from outside through DDS

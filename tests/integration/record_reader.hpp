@@ -1,6 +1,6 @@
 #pragma once
 // Reads one topic of the runtime recorder's recording (<out>/record/run.mcap) back into IDL messages, with gdnav's
-// own MCAP reader (components/recorder/record_file.hpp).
+// own MCAP reader (common/io/recording/record_file.hpp).
 #include <filesystem>
 #include <stdexcept>
 #include <vector>

@@ -1,4 +1,4 @@
-// An input with a stride (InputBase::stride, runtime/stride_filter.hpp) over real DDS: a reader outside the run asks
+// An input with a stride (InputBase::stride, dds/filters/stride_filter.hpp) over real DDS: a reader outside the run asks
 // for every 10th step of ImuSample during a distributed run and must get exactly those steps, all of them — the
 // producer's writer filters them (gdnav participants register the filter), and nothing it needs goes missing.
 // What the filter saves on the wire is measured, not tested (docs/runtime.md, "Next cut"; docs/viewing.md).

@@ -8,7 +8,7 @@ Runs two `gdnav montecarlo` batches of scenario #2 in the direct layout, on the 
 of both has the same mission, wind, offsets, sensor errors and turbulence):
 
   gnss_returns/  GNSS kept by the sensor (`never_lost`) and every GnssSample dropped from 100.5 s to 300 s (a `drop`
-                 fault, runtime/faults): the last fix before the outage is the 100 s one, as in the paper scenario,
+                 fault, framework/faults): the last fix before the outage is the 100 s one, as in the paper scenario,
                  and the fixes come back from 300 s. The runs are bit-identical to the paper runs until nav_pos
                  re-acquires (304 s).
   paper2/        the unfaulted paper scenario: GNSS lost for good at t_GNSS = 100 s.

@@ -10,7 +10,7 @@ in the file is replaced by the table KEY (keys: baseline_attitude, baseline_alti
 baseline_horizontal, and per scenario S: sS_summary, sS_<group>, e.g. s2_attitude_variants). --figures DIR writes
 sS_comparison.png (per-run mean attitude error and final horizontal error of every configuration).
 
-Statistics are gdnav report's (common/metrics/aggregate.cpp): across runs, mean, population std and signed max
+Statistics are gdnav report's (common/core/metrics/aggregate.cpp): across runs, mean, population std and signed max
 (largest |value|, sign kept) of each per-run metric; for per-run maxima, mean and std of |max|; non-finite values
 skipped. A comparison group is aggregated over the run indices every batch of the group completed, so its
 configurations fly the same missions; paired differences to the baseline are mean +- standard error over those runs.
@@ -68,7 +68,7 @@ GROUPS = [
 ]
 
 
-# ---------------------------------------------------------------- statistics (as common/metrics/aggregate.cpp)
+# ---------------------------------------------------------------- statistics (as common/core/metrics/aggregate.cpp)
 def agg(values):
     v = [x for x in values if x is not None and math.isfinite(x)]
     if not v:

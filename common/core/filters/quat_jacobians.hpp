@@ -1,6 +1,6 @@
 #pragma once
 // Quaternion helpers for filters that carry q_nb as a raw 4-vector (w, x, y, z) in an additive EKF state.
-// Convention (common/math/rotation.hpp): Hamilton, scalar first, q_nb rotates body components into NED:
+// Convention (common/core/math/rotation.hpp): Hamilton, scalar first, q_nb rotates body components into NED:
 //   forward  v_n = q (x) [0, v_b] (x) q*  = R(q) v_b
 //   backward v_b = q* (x) [0, v_n] (x) q  = R(q)^T v_n
 // Here R(q) is the homogeneous quadratic form of q (equal to the rotation matrix when |q| = 1 and scaled by |q|^2

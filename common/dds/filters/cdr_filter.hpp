@@ -1,5 +1,5 @@
 #pragma once
-// What gdnav's writer-side content filters share (runtime/stride_filter.hpp, runtime/status_filter.hpp): reading a
+// What gdnav's writer-side content filters share (dds/filters/stride_filter.hpp, dds/filters/status_filter.hpp): reading a
 // field from a sample's CDR bytes, and a Fast DDS filter factory that makes one filter per ContentFilteredTopic from
 // its single parameter. Each filter class is registered with every participant (DdsContext) before any endpoint.
 #include <cstdint>

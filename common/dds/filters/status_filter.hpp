@@ -1,6 +1,6 @@
 #pragma once
 // A content filter "the statuses of one member" for gdnav/ComponentStatus, evaluated by the writer like the stride
-// filter (runtime/stride_filter.hpp): a member host needs only the clock's heartbeat from that topic, not the 10 Hz
+// filter (dds/filters/stride_filter.hpp): a member host needs only the clock's heartbeat from that topic, not the 10 Hz
 // status of every other member (measured: docs/runtime.md, "Where a distributed step's time goes"), so its reader
 // is a ContentFilteredTopic of class kStatusFilterClass with the member name as parameter. Every DdsContext
 // registers the factory; a writer without it sends everything and the reader filters itself (same samples).

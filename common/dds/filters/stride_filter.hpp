@@ -5,7 +5,7 @@
 // of steps k % N == 0 (for the others Fast DDS 2.9 sends one GAP per delivered sample; measured: docs/runtime.md,
 // "Deliver only the steps a reader uses"). A writer without the factory (another DDS vendor, a participant that did
 // not register it) sends every sample, and the reader applies the same filter itself: it gets the same samples.
-// An observer's input at stride 10 usually reads a decimated mirror instead (runtime/mirror.hpp: cheaper on the wire).
+// An observer's input at stride 10 usually reads a decimated mirror instead (dds/host/mirror.hpp: cheaper on the wire).
 // The filter reads SampleStamp.step from the CDR bytes: every data topic starts with `SampleStamp stamp`
 // (run_id: uint64, step: uint64), so the step is the 8 bytes at offset 8 of the body, after the 4-byte
 // encapsulation header whose second byte tells the byte order.

@@ -35,7 +35,7 @@ void DdsHost::Impl::setup() {
         hosted.push_back(c->name());
     }
     // A process of observers only (the live bridge in the distributed layout) takes the CPU time the run leaves idle,
-    // before its DDS threads start (they inherit the value): nobody waits for it (runtime/process_priority.hpp).
+    // before its DDS threads start (they inherit the value): nobody waits for it (dds/process/process_priority.hpp).
     const bool observers_only =
         std::all_of(raw.begin(), raw.end(), [](const Component* c) { return hosted_as_observer(*c); });
     if (observers_only && rc.observer_nice > 0) {
@@ -50,12 +50,12 @@ void DdsHost::Impl::setup() {
                                        security::process_identity(hosted));
     tick_reader = dds->reader(topics::kTick, message_ops<msg::Tick>(), kControlReaderProfile);
     control_reader = dds->reader(topics::kRunControl, message_ops<msg::RunControl>(), kLatchedReaderProfile);
-    // Only the clock's statuses (its heartbeat): the other members' are for the clock (runtime/status_filter.hpp).
+    // Only the clock's statuses (its heartbeat): the other members' are for the clock (dds/filters/status_filter.hpp).
     status_reader = dds->status_reader(topics::kStatus, message_ops<msg::ComponentStatus>(), kControlReaderProfile,
                                        kClockName);
     done_writer = dds->writer(topics::kStepDone, message_ops<msg::StepDone>(), kControlWriterProfile);
     status_writer = dds->writer(topics::kStatus, message_ops<msg::ComponentStatus>(), kControlWriterProfile);
-    const bool secure = !rc.security_dir.empty();  // no mirrors for observers then (runtime/mirror.hpp)
+    const bool secure = !rc.security_dir.empty();  // no mirrors for observers then (dds/host/mirror.hpp)
     for (Component* c : g.order) {
         Local l;
         l.comp = c;

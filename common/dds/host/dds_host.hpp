@@ -2,7 +2,7 @@
 // DDS host: runs one or more components in one process (distributed = one each, composed = several), talking to
 // the clock and to the other members over Fast DDS, following the lockstep protocol of lockstep.hpp.
 // Inputs are kept in per-port inboxes indexed by step, so arrival order never matters. The fault schedule comes
-// with the clock's CONFIGURE (runtime/faults/): inputs pass through it, killed members are not stepped.
+// with the clock's CONFIGURE (framework/faults/): inputs pass through it, killed members are not stepped.
 #include <functional>
 #include <memory>
 #include <string>

@@ -140,7 +140,7 @@ void DdsHost::Impl::configure_from_table() {
 }
 
 // An observer's inputs that may read a mirror get their reader once the member table names the producers
-// (runtime/mirror.hpp): the mirror when every producer writes one, else the topic itself (with the stride filter).
+// (dds/host/mirror.hpp): the mirror when every producer writes one, else the topic itself (with the stride filter).
 void DdsHost::Impl::make_deferred_readers() {
     const auto writes_mirror = [this](const std::string& name) {
         const bool configured = std::any_of(rc.members.begin(), rc.members.end(),
@@ -175,7 +175,7 @@ bool DdsHost::Impl::all_matched() {
             int expected = 0;
             for (const auto& m : table)
                 for (const auto& t : split_topics(m.inputs().to_string())) expected += (t == o.port->topic());
-            // An observer may read the topic's mirror instead (runtime/mirror.hpp): its reader is matched there.
+            // An observer may read the topic's mirror instead (dds/host/mirror.hpp): its reader is matched there.
             const int mirrored = o.mirror ? o.mirror_matched->readers.load() : 0;
             PublicationMatchedStatus st;
             o.writer->get_publication_matched_status(st);

@@ -39,7 +39,7 @@ struct Channel {
     std::unique_ptr<faults::InputFaults> faults;  // scheduled faults on this input (nullptr: none)
     std::uint64_t lost_until{0};  // its producer rejoined: samples of steps below this one are lost
     bool revived{false};
-    bool deferred{false};         // an observer's input: its reader is made at CONFIGURE (runtime/mirror.hpp)
+    bool deferred{false};         // an observer's input: its reader is made at CONFIGURE (dds/host/mirror.hpp)
     bool seen{false};             // a sample has arrived (any step)
     std::uint64_t newest{0};      // the newest step of the samples arrived (an observer's lost-step test)
     void saw(std::uint64_t s) {
@@ -68,7 +68,7 @@ struct Output {
     eprosima::fastdds::dds::DataWriter* writer{nullptr};
     std::vector<Route> routes;  // local readers (their DDS readers are matched too: not counted as outside ones)
     std::unique_ptr<MatchCount> matched;  // listener of `writer` (outlives it: the host deletes DDS first)
-    // The decimated mirror of the topic for observers (runtime/mirror.hpp; nullptr: none) and its readers.
+    // The decimated mirror of the topic for observers (dds/host/mirror.hpp; nullptr: none) and its readers.
     eprosima::fastdds::dds::DataWriter* mirror{nullptr};
     std::unique_ptr<MatchCount> mirror_matched;
 };

@@ -5,7 +5,7 @@
 // without observers writes nothing more. An observer (the live bridge) whose input has a stride that is a multiple
 // of kMirrorStride reads the mirror instead of the topic when reads_mirror() says every producer writes one: then
 // the producers' writers of the topic itself never see it, and deliver exactly what the run's own readers need.
-// (A writer-side content filter, runtime/stride_filter.hpp, delivers fewer samples too, but Fast DDS 2.9.1 still
+// (A writer-side content filter, dds/filters/stride_filter.hpp, delivers fewer samples too, but Fast DDS 2.9.1 still
 // sends a filtered reader GAPs and HEARTBEATs, and splits the writer's datagrams to the other readers: measured
 // +5.1 sendto per step for the bridge's eleven readers against +1.3 with mirrors.)
 // Only gdnav's own hosts write mirrors: a producer run outside gdnav (an external member, another DDS vendor) need

@@ -14,7 +14,7 @@
 //
 // A fault acts on the samples a target member publishes (all its output topics, or `topic`), from the first step
 // with t >= at_s to the last step with t < until_s (to the end of the run without until_s). The runtime applies it
-// where the samples are delivered (runtime/faults/input_faults.hpp), so every consumer in every layout sees the
+// where the samples are delivered (framework/faults/input_faults.hpp), so every consumer in every layout sees the
 // same faulted samples, and a run with faults is as reproducible as one without. `kill` stops the member itself: it
 // is not stepped, publishes nothing and its consumers see its inputs lost; `restart` (or until_s of a kill)
 // creates the member anew at that step boundary (configured as at the start: its state starts over).

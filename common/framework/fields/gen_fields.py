@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Generates the field tables of the IDL message types (runtime/fields/field_table.hpp) from an IDL file.
+"""Generates the field tables of the IDL message types (framework/fields/field_table.hpp) from an IDL file.
 
     gen_fields.py IDL OUT.cpp
 

@@ -65,7 +65,7 @@ std::string known_topics_list() {
 // ------------------------------------------------------------------------------------------------ reading
 namespace {
 
-// A viewer channel (components/viewer) that gdnav wrote: derived data, skipped by gdnav's reader.
+// A viewer channel (common/io/viewer) that gdnav wrote: derived data, skipped by gdnav's reader.
 bool is_derived(const mcap::Channel& c, const mcap::Schema* schema) {
     return schema && viewer::is_viewer_channel(c.topic, schema->name, schema->encoding, c.message_encoding);
 }

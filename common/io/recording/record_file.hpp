@@ -1,7 +1,7 @@
 #pragma once
 // The runtime recorder's recording, written by the recorder (and `gdnav import-log`) and read back by the replay
 // component and `gdnav export-log`:
-//   <dir>/run.mcap     one indexed, zstd-chunked MCAP file (common/mcap, https://mcap.dev/spec; docs/viewing.md):
+//   <dir>/run.mcap     one indexed, zstd-chunked MCAP file (common/io/mcap, https://mcap.dev/spec; docs/viewing.md):
 //                      a channel per recorded topic (topic = the gdnav topic name, message encoding `cdr`, schema
 //                      encoding `omgidl`, schema name = the fully-qualified IDL type, schema data = the IDL text);
 //                      one message per recorded step: sequence = step k (mod 2^32; the sample's stamp carries
@@ -78,7 +78,7 @@ struct Recording {
     std::filesystem::path file;
     std::map<std::string, TopicRecord> topics;  // the topics asked for
     std::vector<std::string> channels;          // every gdnav topic channel's topic, in channel order
-    std::vector<std::string> derived_channels;  // the viewer channels (components/viewer): skipped, not decoded
+    std::vector<std::string> derived_channels;  // the viewer channels (common/io/viewer): skipped, not decoded
     std::map<std::string, std::string> run_metadata;  // the "gdnav.run" metadata record
     std::string run_yaml;                       // the run.yaml attachment ("" when absent)
     bool complete{false};  // the MCAP file is whole (summary, footer, CRCs); false for a run killed mid-write
@@ -86,7 +86,7 @@ struct Recording {
 };
 
 // Reads <dir>/run.mcap: every channel must be a known gdnav topic in CDR with its omgidl schema, or one of gdnav's
-// viewer channels (components/viewer/viewer_channels.hpp; listed in derived_channels, messages skipped) (anything else —
+// viewer channels (common/io/viewer/viewer_channels.hpp; listed in derived_channels, messages skipped) (anything else —
 // an MCAP written by another tool — throws std::runtime_error "FILE: channel 'TOPIC' (id N): ..."); each topic of
 // `topics` (full names; empty: every channel) must have a channel; its messages are checked: every payload decodes
 // as the topic's type and the messages' sequences (the recorded steps; a delayed sample keeps its older stamp) strictly

@@ -14,7 +14,7 @@
 //
 // Frames (3D panel, z up): `enu` = East-North-Up tangent plane at the first true position the owner saw (its origin),
 // body frames x forward, y left, z up (viewer_math.hpp). Timestamps (foxglove::Time) = the log time the owner gives
-// (the recording's: k * step_ns since step 0). Errors = common/metrics (run.h5 /error), in degrees where angular.
+// (the recording's: k * step_ns since step 0). Errors = common/core/metrics (run.h5 /error), in degrees where angular.
 // Position covariance: not known to the viewer channels (type UNKNOWN, zeros).
 //
 // The owner calls encode() at every step; a message is produced at the steps k % decimation == 0 when its inputs are

@@ -8,8 +8,8 @@
 //                         q_enu_ned = 180 deg about (1, 1, 0)/sqrt 2 (x_enu = y_ned, y_enu = x_ned, z_enu = -z_ned)
 //                         and q_frd_flu = 180 deg about x (gdnav's body axes are x forward, y right, z down);
 //   position in ENU       the exact local East-North-Up offset of a point from the origin (WGS84 ECEF difference
-//                         rotated into the origin's tangent plane, common/earth);
-//   navigation errors     metrics::nav_errors (common/metrics, the same values as run.h5 /error) in the viewer's
+//                         rotated into the origin's tangent plane, common/core/earth);
+//   navigation errors     metrics::nav_errors (common/core/metrics, the same values as run.h5 /error) in the viewer's
 //                         units (deg, m, m/s) plus the ground-speed error |v_est NE| - |v NE|.
 #include <cstdint>
 

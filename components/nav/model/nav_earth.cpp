@@ -26,7 +26,7 @@ Radii radii(double lat) {
 }
 
 Gravity normal_gravity(double lat, double h) {
-    // g(lat, h) = g_msl(lat) * fac(lat, h), fac = 1 - c1(lat) h + 3 h^2 / a^2 (common/earth/gravity.hpp).
+    // g(lat, h) = g_msl(lat) * fac(lat, h), fac = 1 - c1(lat) h + 3 h^2 / a^2 (common/core/earth/gravity.hpp).
     const double s = std::sin(lat), c = std::cos(lat);
     const double d = 1.0 - kE2 * s * s;
     const double g_msl = ge::normal_gravity_msl_mps2(lat);

@@ -1,5 +1,5 @@
 #pragma once
-// The navigation filters' view of the shared Earth and atmosphere toolkits (common/earth, common/atmosphere):
+// The navigation filters' view of the shared Earth and atmosphere toolkits (common/core/earth, common/core/atmosphere):
 // thin adapters with the names the filter code uses, plus the partial derivatives its Jacobians need that the
 // shared toolkits do not provide (dN/dlat, dM/dlat, dg/dlat, dg/dh). No second geodesy or INSA implementation.
 //   WGS84 radii N, M; normal gravity g(lat, h) (Somigliana + altitude terms) with derivatives; Earth rate,

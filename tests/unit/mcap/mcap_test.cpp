@@ -1,4 +1,4 @@
-// common/mcap against the MCAP specification (https://mcap.dev/spec): CRC-32, a written file read back (records,
+// common/io/mcap against the MCAP specification (https://mcap.dev/spec): CRC-32, a written file read back (records,
 // statistics, chunk and message indexes checked byte by byte), and files cut short or damaged.
 #include <gtest/gtest.h>
 

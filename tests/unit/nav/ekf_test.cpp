@@ -1,4 +1,4 @@
-// EKF toolkit (common/filters): quaternion Jacobians vs central differences, transition matrix vs the matrix
+// EKF toolkit (common/core/filters): quaternion Jacobians vs central differences, transition matrix vs the matrix
 // exponential, Joseph update vs the closed-form scalar Kalman filter.
 #include <gtest/gtest.h>
 

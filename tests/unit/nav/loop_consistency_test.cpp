@@ -1,6 +1,6 @@
 // Consistency of the navigation filters with the simulated world they run in (issue 5, closed loop):
 //  * the filters' observation and state equations, evaluated at the TRUE state, explain the outputs of the REAL
-//    sensor models (components/sensors) on a turning trajectory built with the REAL Earth model (common/earth):
+//    sensor models (components/sensors) on a turning trajectory built with the REAL Earth model (common/core/earth):
 //    the residuals are the sensors' white noise only. A sign or frame slip in the Earth rate, Coriolis, gravity,
 //    B_dev / E_mag, quaternion or platform conventions shows up as a residual mean far above the noise.
 //  * root cause of the closed-loop attitude drift: the position filter started f and E_acc with independent errors
@@ -21,7 +21,7 @@
 
 using namespace gdnav;
 using namespace gdnav::nav;
-namespace world = gdnav::earth;  // the simulation's Earth (common/earth), not the filters' nav_earth
+namespace world = gdnav::earth;  // the simulation's Earth (common/core/earth), not the filters' nav_earth
 
 namespace {
 
@@ -45,7 +45,7 @@ struct Stats {
 }  // namespace
 
 TEST(NavLoopConsistency, TruthStateExplainsTheRealSensorsOnATurn) {
-    // Kinematic truth, written with common/earth (as flight_physics does):
+    // Kinematic truth, written with common/core/earth (as flight_physics does):
     //   Euler (yaw0 + r t, pitch, bank) constant-rate turn  =>  w_nb_b = r (-sin th, sin ph cos th, cos ph cos th)
     //   v_n = wind + R v_tas_b (air vector constant in body),  v_n_dot = R (w_nb x v_tas_b)
     //   f_ib_b = R^T (v_n_dot - g + (2 w_ie + w_en) x v_n),   w_ib_b = w_nb_b + R^T (w_ie + w_en)

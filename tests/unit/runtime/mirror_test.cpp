@@ -1,4 +1,4 @@
-// Who reads a decimated mirror (runtime/mirror.hpp): the rule an observer applies to each input once the member
+// Who reads a decimated mirror (dds/host/mirror.hpp): the rule an observer applies to each input once the member
 // table names its producers. Over DDS: tests/integration/mirror_test.cpp.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// An observer's lost-step rule (runtime/host/host_inbox.hpp, host::step_missed): a step is given up only when an
+// An observer's lost-step rule (dds/host/host_inbox.hpp, host::step_missed): a step is given up only when an
 // input it reads has no sample of that step while a newer sample of the same input has arrived (one writer's samples
 // arrive in order). Inboxes filled by hand, no DDS.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The status filter (runtime/status_filter.hpp): its reading of ComponentStatus.member from the CDR bytes the
+// The status filter (dds/filters/status_filter.hpp): its reading of ComponentStatus.member from the CDR bytes the
 // writer's Fast DDS hands it, and a filtered status reader over real DDS (two participants in this process) that
 // gets the chosen member's statuses and nothing else.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The stride filter's reading of SampleStamp.step from a serialised sample (runtime/stride_filter.hpp): the same
+// The stride filter's reading of SampleStamp.step from a serialised sample (dds/filters/stride_filter.hpp): the same
 // bytes the writer's Fast DDS hands it, i.e. what MessageOps::serialize writes (CDR with its encapsulation header).
 #include <gtest/gtest.h>
 
