@@ -82,9 +82,12 @@ def error_figure(t, err, t_gnss, faults, t_end):
         fig.add_vrect(x0=a, x1=b, fillcolor="orange", opacity=0.18, line_width=0, row="all", col=1)
         fig.add_annotation(x=a, y=1.0, yref="paper", xanchor="left", yanchor="bottom", showarrow=False, yshift=22,
                            text="fault: " + esc(run_events.fault_label(f)), font=dict(size=10, color="#b35900"))
-    fig.add_vline(x=t_gnss, line=dict(color="black", dash="dot", width=1.2), row="all", col=1)
-    fig.add_annotation(x=t_gnss, y=1.0, yref="paper", xanchor="right", yanchor="bottom", showarrow=False, yshift=22,
-                       text="GNSS lost", font=dict(size=11))
+    # The axis spans the data: a GNSS loss after the run's end is not drawn (it would stretch the axis past the data).
+    if t_gnss <= t_end:
+        fig.add_vline(x=t_gnss, line=dict(color="black", dash="dot", width=1.2), row="all", col=1)
+        fig.add_annotation(x=t_gnss, y=1.0, yref="paper", xanchor="right", yanchor="bottom", showarrow=False,
+                           yshift=22, text="GNSS lost", font=dict(size=11))
+    fig.update_xaxes(range=[0.0, max(t_end, 1e-3)], row="all", col=1)
     fig.update_xaxes(title_text="t [s]", row=len(ERROR_ROWS), col=1)
     fig.update_layout(height=230 * len(ERROR_ROWS) + 80, margin=dict(l=60, r=20, t=80, b=40),
                       legend=dict(orientation="h", y=-0.06), hovermode="x unified")
@@ -170,9 +173,11 @@ def run_page(run_dir, h5, metrics, path, title, back=None):
     page.add(f"<h1>{esc(title)}</h1>")
     if back:
         page.add(f'<p><a href="{esc(back)}">back to the batch</a></p>')
-    page.note(f"{os.path.realpath(run_dir)} · GNSS lost at t = {t_gnss:g} s · errors = estimate − truth "
-              "(docs/montecarlo.md); "
-              "plots from t = 0 (the metrics window), at most 4000 points per curve.")
+    t_track = (float(tt[0]), float(tt[-1])) if len(tt) else (0.0, 0.0)
+    gnss = f"GNSS lost at t = {t_gnss:g} s" if t_gnss <= t_end else f"GNSS not lost before the end (t = {t_end:g} s)"
+    page.note(f"{os.path.realpath(run_dir)} · {gnss} · errors = estimate − truth (docs/montecarlo.md); "
+              f"track from t = {t_track[0]:g} s to {t_track[1]:g} s, errors from t = 0 (the metrics window), "
+              "at most 4000 points per curve.")
     page.table(["metric (metrics.yaml)", "value"], run_summary_rows(metrics))
     page.heading("Track")
     page.figure(track_figure(truth, estimate, t_gnss), "track")
@@ -219,9 +224,12 @@ def band_figure(stats, t_gnss):
                                      hoverinfo="skip"), row=row, col=1)
             fig.add_trace(go.Scatter(x=tt, y=rounded(mean, dec), mode="lines", line=dict(width=1.4, color=color),
                                      name=f"{label} mean [{unit}]", legendgroup=col), row=row, col=1)
-    fig.add_vline(x=t_gnss, line=dict(color="black", dash="dot", width=1.2), row="all", col=1)
-    fig.add_annotation(x=t_gnss, y=1.0, yref="paper", xanchor="right", yanchor="bottom", showarrow=False, yshift=22,
-                       text="GNSS lost", font=dict(size=11))
+    # The axis spans the data: a GNSS loss after the run's end is not drawn (it would stretch the axis past the data).
+    if t_gnss <= t_end:
+        fig.add_vline(x=t_gnss, line=dict(color="black", dash="dot", width=1.2), row="all", col=1)
+        fig.add_annotation(x=t_gnss, y=1.0, yref="paper", xanchor="right", yanchor="bottom", showarrow=False,
+                           yshift=22, text="GNSS lost", font=dict(size=11))
+    fig.update_xaxes(range=[0.0, max(t_end, 1e-3)], row="all", col=1)
     fig.update_xaxes(title_text="t [s]", row=len(ERROR_ROWS), col=1)
     fig.update_layout(height=230 * len(ERROR_ROWS) + 80, margin=dict(l=60, r=20, t=80, b=40),
                       legend=dict(orientation="h", y=-0.06))
