@@ -31,7 +31,9 @@ void LiveBridge::configure(const config::Config& cfg, const runtime::RunInfo& ru
             cfg.fail("topics", "unknown topic '" + t + "' (known: " + recorder::known_topics_list() + ")");
         t = full;
     }
-    options_.name = name();
+    // What a viewer shows as the server's name: gdnav and the run it belongs to.
+    options_.name = "gdnav run " + std::to_string(run.run_index) + ", seed " + std::to_string(run.seed) +
+                    (run.out_dir.empty() ? std::string() : " (" + run.out_dir + ")");
     options_.port = static_cast<std::uint16_t>(cfg.get_int("port", 8765, 1, 65535));
     options_.address = cfg.get_string("bind", "127.0.0.1");
     decimation_ = static_cast<std::uint64_t>(cfg.get_int("decimation", 10, 1, 1000000));
