@@ -57,8 +57,10 @@ RunConfig RunConfig::load(const std::filesystem::path& file, const RunOverrides&
     return parse(ss.str(), file.string(), o);
 }
 
-RunConfig RunConfig::parse(const std::string& text, const std::string& origin, const RunOverrides& o) {
-    // Parse once to apply overrides on the tree, then validate the resulting document.
+namespace {
+
+// The command line's overrides, applied to the document before it is validated.
+YAML::Node apply_overrides(const std::string& text, const std::string& origin, const RunOverrides& o) {
     Config probe = Config::parse(text, origin);
     YAML::Node root = YAML::Clone(probe.node());
     if (!root["run"] || !root["run"].IsMap())
@@ -88,28 +90,31 @@ RunConfig RunConfig::parse(const std::string& text, const std::string& origin, c
         root["run"].remove("duration_s");
         root["run"]["steps"] = *o.steps;
     }
-    if (root["generator"]) {
-        const Config top0 = Config::wrap(root, origin);
-        const Config gen = top0.child("generator");
-        const std::string name = gen.get_string("name");
-        const ScenarioGenerator* g = find_scenario_generator(name);
-        if (!g) {
-            std::string known;
-            for (const auto& n : scenario_generator_names()) known += (known.empty() ? "" : ", ") + n;
-            gen.fail("name", "unknown scenario generator '" + name + "' (known: " + known + ")");
-        }
-        const Config run0 = top0.child("run");
-        const std::uint64_t seed = run0.get_uint64("seed");
-        const std::uint64_t index = run0.has("run_index") ? run0.get_uint64("run_index") : 0;
-        root = (*g)(root, seed, index, origin);
-        root.remove("generator");
-    }
+    return root;
+}
 
-    RunConfig rc;
-    rc.origin = origin;
-    rc.root_ = root;
-    const Config top = Config::wrap(root, origin);
-    const Config run = top.child("run");
+// A `generator:` section: the named scenario generator draws the run's document for its seed and run index.
+YAML::Node expand_generator(YAML::Node root, const std::string& origin) {
+    if (!root["generator"]) return root;
+    const Config top0 = Config::wrap(root, origin);
+    const Config gen = top0.child("generator");
+    const std::string name = gen.get_string("name");
+    const ScenarioGenerator* g = find_scenario_generator(name);
+    if (!g) {
+        std::string known;
+        for (const auto& n : scenario_generator_names()) known += (known.empty() ? "" : ", ") + n;
+        gen.fail("name", "unknown scenario generator '" + name + "' (known: " + known + ")");
+    }
+    const Config run0 = top0.child("run");
+    const std::uint64_t seed = run0.get_uint64("seed");
+    const std::uint64_t index = run0.has("run_index") ? run0.get_uint64("run_index") : 0;
+    root = (*g)(root, seed, index, origin);
+    root.remove("generator");
+    return root;
+}
+
+// The `run:` section: timing, timeouts, transport, members left outside, security, output.
+void read_run_section(RunConfig& rc, const Config& run) {
     rc.info.seed = run.get_uint64("seed");
     rc.info.run_index = run.has("run_index") ? run.get_uint64("run_index") : 0;
     rc.info.dt_s = run.get_double("dt_s", 0.01, Range{1e-4, 1.0});
@@ -144,7 +149,10 @@ RunConfig RunConfig::parse(const std::string& text, const std::string& origin, c
     rc.out_dir = run.get_string("out_dir", "out/run");
     rc.info.out_dir = rc.out_dir;
     run.finish();
+}
 
+// The `components:` section and the external members: names unique, at most 63, essential ones present.
+void read_members(RunConfig& rc, const Config& top, const Config& run) {
     const Config comps = top.child("components");
     std::set<std::string> names;
     for (const auto& name : comps.keys()) {
@@ -167,8 +175,12 @@ RunConfig RunConfig::parse(const std::string& text, const std::string& origin, c
     if (names.size() > 63) run.fail("external", "at most 63 members per run (components and external members)");
     for (const auto& e : rc.essential)
         if (!names.count(e)) run.fail("essential", "'" + e + "' is not a member of this run");
-    // The fault schedule: parsed here, checked against the members' ports by build().
-    if (o.faults_file) {  // errors name the faults file
+}
+
+// The fault schedule: parsed here, checked against the members' ports by build(). Errors name the faults file
+// when one was given.
+void read_faults(RunConfig& rc, const Config& top, const std::string& origin, const RunOverrides& o) {
+    if (o.faults_file) {
         const Config f = Config::load(*o.faults_file);
         rc.faults = faults::FaultSchedule::parse(f, rc.info);
         f.finish();
@@ -179,6 +191,21 @@ RunConfig RunConfig::parse(const std::string& text, const std::string& origin, c
     }
     if (rc.faults.to_yaml().size() > 8192)
         top.fail("faults", "the schedule takes more than 8192 characters of YAML (RunControl.faults); use fewer faults");
+}
+
+}  // namespace
+
+RunConfig RunConfig::parse(const std::string& text, const std::string& origin, const RunOverrides& o) {
+    // Parse once to apply overrides on the tree, then validate the resulting document.
+    const YAML::Node root = expand_generator(apply_overrides(text, origin, o), origin);
+    RunConfig rc;
+    rc.origin = origin;
+    rc.root_ = root;
+    const Config top = Config::wrap(root, origin);
+    const Config run = top.child("run");
+    read_run_section(rc, run);
+    read_members(rc, top, run);
+    read_faults(rc, top, origin, o);
     // Only 'run', 'components' and 'faults' at top level; each component section is checked by build().
     for (const auto& k : top.keys())
         if (k != "run" && k != "components" && k != "faults")

@@ -177,6 +177,72 @@ void Writer::write_attachment(const std::string& name, const std::string& media_
     emit(scratch_, true);
 }
 
+void Writer::write_statistics(std::vector<std::uint8_t>& s) const {
+    ByteWriter w(s);
+    const std::size_t at = w.begin_record(Op::Statistics);
+    w.u64(message_count_);
+    w.u16(schemas_);
+    w.u32(channels_);
+    w.u32(static_cast<std::uint32_t>(attachments_.size()));
+    w.u32(static_cast<std::uint32_t>(metadata_.size()));
+    w.u32(static_cast<std::uint32_t>(chunks_.size()));
+    w.u64(start_time_);
+    w.u64(end_time_);
+    w.u32(static_cast<std::uint32_t>(channel_counts_.size() * 10));
+    for (const auto& [ch, n] : channel_counts_) {
+        w.u16(ch);
+        w.u64(n);
+    }
+    w.end_record(at);
+}
+
+void Writer::write_chunk_indexes(std::vector<std::uint8_t>& s) const {
+    ByteWriter w(s);
+    for (const auto& c : chunks_) {
+        const std::size_t at = w.begin_record(Op::ChunkIndex);
+        w.u64(c.start_time);
+        w.u64(c.end_time);
+        w.u64(c.offset);
+        w.u64(c.length);
+        w.u32(static_cast<std::uint32_t>(c.message_index_offsets.size() * 10));
+        for (const auto& [ch, off] : c.message_index_offsets) {
+            w.u16(ch);
+            w.u64(off);
+        }
+        w.u64(c.message_index_length);
+        w.str(opt_.compression);
+        w.u64(c.compressed_size);
+        w.u64(c.uncompressed_size);
+        w.end_record(at);
+    }
+}
+
+void Writer::write_attachment_indexes(std::vector<std::uint8_t>& s) const {
+    ByteWriter w(s);
+    for (const auto& a : attachments_) {
+        const std::size_t at = w.begin_record(Op::AttachmentIndex);
+        w.u64(a.offset);
+        w.u64(a.length);
+        w.u64(a.log_time);
+        w.u64(a.create_time);
+        w.u64(a.data_size);
+        w.str(a.name);
+        w.str(a.media_type);
+        w.end_record(at);
+    }
+}
+
+void Writer::write_metadata_indexes(std::vector<std::uint8_t>& s) const {
+    ByteWriter w(s);
+    for (const auto& m : metadata_) {
+        const std::size_t at = w.begin_record(Op::MetadataIndex);
+        w.u64(m.offset);
+        w.u64(m.length);
+        w.str(m.name);
+        w.end_record(at);
+    }
+}
+
 void Writer::close() {
     if (!file_) return;
     flush_chunk();
@@ -200,64 +266,10 @@ void Writer::close() {
     };
     group(Op::Schema, [&] { w.bytes(schema_records_.data(), schema_records_.size()); });
     group(Op::Channel, [&] { w.bytes(channel_records_.data(), channel_records_.size()); });
-    group(Op::Statistics, [&] {
-        const std::size_t at = w.begin_record(Op::Statistics);
-        w.u64(message_count_);
-        w.u16(schemas_);
-        w.u32(channels_);
-        w.u32(static_cast<std::uint32_t>(attachments_.size()));
-        w.u32(static_cast<std::uint32_t>(metadata_.size()));
-        w.u32(static_cast<std::uint32_t>(chunks_.size()));
-        w.u64(start_time_);
-        w.u64(end_time_);
-        w.u32(static_cast<std::uint32_t>(channel_counts_.size() * 10));
-        for (const auto& [ch, n] : channel_counts_) {
-            w.u16(ch);
-            w.u64(n);
-        }
-        w.end_record(at);
-    });
-    group(Op::ChunkIndex, [&] {
-        for (const auto& c : chunks_) {
-            const std::size_t at = w.begin_record(Op::ChunkIndex);
-            w.u64(c.start_time);
-            w.u64(c.end_time);
-            w.u64(c.offset);
-            w.u64(c.length);
-            w.u32(static_cast<std::uint32_t>(c.message_index_offsets.size() * 10));
-            for (const auto& [ch, off] : c.message_index_offsets) {
-                w.u16(ch);
-                w.u64(off);
-            }
-            w.u64(c.message_index_length);
-            w.str(opt_.compression);
-            w.u64(c.compressed_size);
-            w.u64(c.uncompressed_size);
-            w.end_record(at);
-        }
-    });
-    group(Op::AttachmentIndex, [&] {
-        for (const auto& a : attachments_) {
-            const std::size_t at = w.begin_record(Op::AttachmentIndex);
-            w.u64(a.offset);
-            w.u64(a.length);
-            w.u64(a.log_time);
-            w.u64(a.create_time);
-            w.u64(a.data_size);
-            w.str(a.name);
-            w.str(a.media_type);
-            w.end_record(at);
-        }
-    });
-    group(Op::MetadataIndex, [&] {
-        for (const auto& m : metadata_) {
-            const std::size_t at = w.begin_record(Op::MetadataIndex);
-            w.u64(m.offset);
-            w.u64(m.length);
-            w.str(m.name);
-            w.end_record(at);
-        }
-    });
+    group(Op::Statistics, [&] { write_statistics(s); });
+    group(Op::ChunkIndex, [&] { write_chunk_indexes(s); });
+    group(Op::AttachmentIndex, [&] { write_attachment_indexes(s); });
+    group(Op::MetadataIndex, [&] { write_metadata_indexes(s); });
     const std::uint64_t summary_offset_start = summary_start + s.size();
     for (const auto& [op, start, length] : groups) {
         const std::size_t at = w.begin_record(Op::SummaryOffset);

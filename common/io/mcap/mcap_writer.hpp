@@ -68,6 +68,11 @@ private:
     };
     void emit(const std::vector<std::uint8_t>& bytes, bool data_section);
     void flush_chunk();
+    // The summary section's records (close()).
+    void write_statistics(std::vector<std::uint8_t>& s) const;
+    void write_chunk_indexes(std::vector<std::uint8_t>& s) const;
+    void write_attachment_indexes(std::vector<std::uint8_t>& s) const;
+    void write_metadata_indexes(std::vector<std::uint8_t>& s) const;
 
     std::filesystem::path path_;
     WriterOptions opt_;

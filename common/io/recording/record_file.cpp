@@ -88,61 +88,72 @@ void check_channel(const fs::path& file, const mcap::Channel& c, const mcap::Sch
 
 }  // namespace
 
-Recording read_recording(const fs::path& dir, const std::vector<std::string>& wanted) {
-    Recording rec;
-    rec.file = recording_file(dir);
-    const std::string file = rec.file.string();
-    std::error_code ec;
-    if (!fs::is_regular_file(rec.file, ec)) throw std::runtime_error(file + ": missing (no recording in " + dir.string() + ")");
+namespace {
 
-    // Messages are checked as they come: channels are validated at their first message (a channel record precedes
-    // its messages), the first problem is kept and thrown after the scan.
+// Collects the messages of the wanted topics while the file is read. Channels are validated at their first message
+// (a channel record precedes its messages); the first problem is kept and thrown after the scan.
+class MessageCollector {
+public:
+    MessageCollector(Recording& rec, const std::vector<std::string>& wanted)
+        : rec_(rec), file_(rec.file.string()), want_(wanted.begin(), wanted.end()) {}
+
+    void operator()(const mcap::MessageView& m) {
+        if (!error_.empty()) return;
+        auto it = tracks_.find(m.channel_id);
+        if (it == tracks_.end()) {
+            if (!open_track(m)) return;
+            it = tracks_.find(m.channel_id);
+        }
+        Track& t = it->second;
+        const std::uint64_t index = t.index++;
+        if (t.record) keep(t, m, index);
+    }
+
+    [[nodiscard]] const std::string& error() const { return error_; }
+
+private:
     struct Track {
         TopicRecord* record{nullptr};  // nullptr: a channel not asked for
         std::unique_ptr<SampleDecoder> decoder;
         std::unique_ptr<void, SampleDeleter> sample{nullptr, SampleDeleter{nullptr}};
         std::uint64_t index{0};
     };
-    std::map<std::uint16_t, Track> tracks;
-    const std::set<std::string> want(wanted.begin(), wanted.end());
-    std::string error;
-    auto on_message = [&](const mcap::MessageView& m) {
-        if (!error.empty()) return;
-        auto it = tracks.find(m.channel_id);
-        if (it == tracks.end()) {
-            Track t;
-            const mcap::Channel& c = *m.channel;
-            if (is_derived(c, m.schema)) {  // skipped: nothing to check or keep
-                tracks.emplace(m.channel_id, std::move(t));
-                return;
-            }
-            try {
-                check_channel(rec.file, c, m.schema);
-            } catch (const std::runtime_error& e) {
-                error = e.what();
-                return;
-            }
-            if (want.empty() || want.count(c.topic)) {
-                TopicRecord& tr = rec.topics[c.topic];
-                tr.topic = c.topic;
-                tr.file = rec.file;
-                tr.ops = runtime::find_topic(c.topic);
-                t.record = &tr;
-                t.decoder = std::make_unique<SampleDecoder>(*tr.ops);
-                t.sample = std::unique_ptr<void, SampleDeleter>(tr.ops->create(), SampleDeleter{tr.ops});
-            }
-            it = tracks.emplace(m.channel_id, std::move(t)).first;
+
+    // The first message of a channel: checks the channel; a derived or unwanted channel gets an empty track.
+    bool open_track(const mcap::MessageView& m) {
+        Track t;
+        const mcap::Channel& c = *m.channel;
+        if (is_derived(c, m.schema)) {  // skipped: nothing to check or keep
+            tracks_.emplace(m.channel_id, std::move(t));
+            return false;
         }
-        Track& t = it->second;
-        const std::uint64_t index = t.index++;
-        if (!t.record) return;
+        try {
+            check_channel(rec_.file, c, m.schema);
+        } catch (const std::runtime_error& e) {
+            error_ = e.what();
+            return false;
+        }
+        if (want_.empty() || want_.count(c.topic)) {
+            TopicRecord& tr = rec_.topics[c.topic];
+            tr.topic = c.topic;
+            tr.file = rec_.file;
+            tr.ops = runtime::find_topic(c.topic);
+            t.record = &tr;
+            t.decoder = std::make_unique<SampleDecoder>(*tr.ops);
+            t.sample = std::unique_ptr<void, SampleDeleter>(tr.ops->create(), SampleDeleter{tr.ops});
+        }
+        tracks_.emplace(m.channel_id, std::move(t));
+        return true;
+    }
+
+    void keep(Track& t, const mcap::MessageView& m, std::uint64_t index) {
         TopicRecord& tr = *t.record;
         // The step: the message's sequence, i.e. the step the recorder recorded it at (runs have at most 10^8
         // steps, RunConfig). Not the sample's own stamp: a delayed sample (fault `delay`) carries its older stamp.
         const std::uint64_t step = m.sequence;
         auto fail = [&](const std::string& what) {
-            error = file + ": " + tr.topic + ": message " + std::to_string(index) + " (step " + std::to_string(step) +
-                    "): " + what;
+            error_ = file_ + ": " + tr.topic + ": message " + std::to_string(index) + " (step " +
+                     std::to_string(step) + "): " + what;
         };
         if (m.size == 0 || m.size > (1u << 20)) return fail("implausible sample size " + std::to_string(m.size) + " bytes");
         const auto n = static_cast<std::uint32_t>(m.size);
@@ -153,10 +164,17 @@ Recording read_recording(const fs::path& dir, const std::vector<std::string>& wa
         tr.entries.push_back({step, tr.bytes.size(), n});
         tr.bytes.insert(tr.bytes.end(), m.data, m.data + n);
         tr.digest = digest_sample(tr.digest, step, m.data, n);
-    };
-    const mcap::ReadResult r = mcap::read(rec.file, on_message);
-    if (!error.empty()) throw std::runtime_error(error);
-    // Channels without messages are checked too (a foreign channel is refused even when empty).
+    }
+
+    Recording& rec_;
+    std::string file_;
+    std::set<std::string> want_;
+    std::map<std::uint16_t, Track> tracks_;
+    std::string error_;
+};
+
+// Channels without messages are checked too (a foreign channel is refused even when empty).
+void check_all_channels(Recording& rec, const mcap::ReadResult& r) {
     for (const auto& [id, c] : r.channels) {
         const auto s = r.schemas.find(c.schema_id);
         const mcap::Schema* schema = s == r.schemas.end() ? nullptr : &s->second;
@@ -167,6 +185,10 @@ Recording read_recording(const fs::path& dir, const std::vector<std::string>& wa
         check_channel(rec.file, c, schema);
         rec.channels.push_back(c.topic);
     }
+}
+
+// A wanted topic with a channel but no message gets an empty record; one without a channel is an error.
+void add_empty_wanted(Recording& rec, const std::vector<std::string>& wanted) {
     for (const auto& topic : wanted) {
         if (rec.topics.count(topic)) continue;
         bool has_channel = false;
@@ -174,29 +196,46 @@ Recording read_recording(const fs::path& dir, const std::vector<std::string>& wa
         if (!has_channel) {
             std::string there;
             for (const auto& c : rec.channels) there += (there.empty() ? "" : ", ") + c;
-            throw std::runtime_error(file + ": no channel " + topic + " (no record of " + topic + "; recorded: " +
-                                     (there.empty() ? "nothing" : there) + ")");
+            throw std::runtime_error(rec.file.string() + ": no channel " + topic + " (no record of " + topic +
+                                     "; recorded: " + (there.empty() ? "nothing" : there) + ")");
         }
-        TopicRecord& tr = rec.topics[topic];  // a channel without messages
+        TopicRecord& tr = rec.topics[topic];
         tr.topic = topic;
         tr.file = rec.file;
         tr.ops = runtime::find_topic(topic);
     }
+}
+
+void warn_incomplete(const Recording& rec, const mcap::ReadResult& r) {
+    std::string got;
+    for (const auto& [topic, tr] : rec.topics)
+        got += (got.empty() ? "" : ", ") + topic + " " + std::to_string(tr.entries.size()) +
+               (tr.entries.empty() ? "" : " (steps " + std::to_string(tr.entries.front().step) + ".." +
+                                              std::to_string(tr.entries.back().step) + ")");
+    spdlog::warn("{}: incomplete MCAP file (recording cut short?) — {}; read the {} messages before it: {}",
+                 rec.file.string(), r.problem, r.messages, got.empty() ? "none" : got);
+}
+
+}  // namespace
+
+Recording read_recording(const fs::path& dir, const std::vector<std::string>& wanted) {
+    Recording rec;
+    rec.file = recording_file(dir);
+    std::error_code ec;
+    if (!fs::is_regular_file(rec.file, ec))
+        throw std::runtime_error(rec.file.string() + ": missing (no recording in " + dir.string() + ")");
+    MessageCollector collect(rec, wanted);
+    const mcap::ReadResult r = mcap::read(rec.file, [&](const mcap::MessageView& m) { collect(m); });
+    if (!collect.error().empty()) throw std::runtime_error(collect.error());
+    check_all_channels(rec, r);
+    add_empty_wanted(rec, wanted);
     for (const auto& m : r.metadata)
         if (m.name == kRunMetadataName) rec.run_metadata = m.entries;
     for (const auto& a : r.attachments)
         if (a.name == kRunYamlAttachment) rec.run_yaml = a.data;
     rec.complete = r.complete;
     rec.problem = r.problem;
-    if (!r.complete) {
-        std::string got;
-        for (const auto& [topic, tr] : rec.topics)
-            got += (got.empty() ? "" : ", ") + topic + " " + std::to_string(tr.entries.size()) +
-                   (tr.entries.empty() ? "" : " (steps " + std::to_string(tr.entries.front().step) + ".." +
-                                                  std::to_string(tr.entries.back().step) + ")");
-        spdlog::warn("{}: incomplete MCAP file (recording cut short?) — {}; read the {} messages before it: {}", file,
-                     r.problem, r.messages, got.empty() ? "none" : got);
-    }
+    if (!r.complete) warn_incomplete(rec, r);
     return rec;
 }
 
