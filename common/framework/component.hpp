@@ -76,9 +76,9 @@ public:
     // 10 reads the producers' decimated mirror of the topic instead where they write one (dds/host/mirror.hpp).
     // set_stride(N) (a member that uses every N-th step) takes the largest divisor of N in [kMinStride, kMaxStride],
     // or 1 (every sample) when N has none. Why these bounds: with Fast DDS 2.9.1 a writer that filters for a reader
-    // still sends it GAP/HEARTBEAT traffic for the skipped samples, and how much depends on the stride. Measured
-    // (docs/runtime.md, "Which strides pay"): the live bridge's 11 readers added 11.6 datagrams per step unfiltered,
-    // 15.0 at stride 2, 7.1-9.6 at strides 4-10, and 18.9 / 23.6 / 33.7 at strides 16 / 20 / 32.
+    // still sends it GAP/HEARTBEAT traffic for the skipped samples; beyond a stride of about 10 that traffic
+    // outweighs the samples saved, and at stride 2 it costs more than sending everything (figures:
+    // docs/notes/runtime-measurements.md, "Which strides pay").
     static constexpr std::uint64_t kMinStride = 4;
     static constexpr std::uint64_t kMaxStride = 10;
     [[nodiscard]] std::uint64_t stride() const { return stride_; }

@@ -25,7 +25,7 @@ namespace {
 constexpr std::int64_t kFormatVersion = 1;
 
 // Holds SIGINT/SIGTERM while the file is being updated: a process without handlers (the direct layout) then dies
-// after the update, never in the middle of it. (SIGKILL cannot be held; that window is a few milliseconds.)
+// after the update, never in the middle of it. (SIGKILL cannot be held; the window it can hit is one update.)
 class SignalHold {
 public:
     SignalHold() {

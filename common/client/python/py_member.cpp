@@ -81,7 +81,7 @@ void PyMember::step(const client::StepInfo& s) {
     {
         // The host calls the step from whichever thread received the sample (its own or a Fast DDS listener
         // thread). Each listener thread keeps its Python thread state for the whole run (deleted by run()): without
-        // the extra reference, pybind11 would create and destroy one per call (hundreds of microseconds).
+        // the extra reference, pybind11 would create and destroy one per call, which is costly (docs/python.md).
         py::gil_scoped_acquire gil;
         thread_local bool kept = false;
         if (!kept && std::this_thread::get_id() != run_thread_) {

@@ -9,7 +9,7 @@
 //   update:    S = H P- H^T + R;  K = P- H^T S^-1;  r = y - h(x-);
 //              x+ = x- + K r;  P+ = (I - K H) P- (I - K H)^T + K R K^T   (Joseph form, symmetric by construction)
 // No heap allocation: all sizes are compile-time. Products use Eigen's coefficient-based lazyProduct, which for
-// these small fixed sizes is several times faster than the blocked GEMM path (no packing).
+// these small fixed sizes beats the blocked GEMM path (no packing; docs/navigation.md, "EKF toolkit").
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>
 

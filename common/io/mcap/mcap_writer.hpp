@@ -25,7 +25,8 @@ struct WriterOptions {
     std::string profile;             // Header.profile ("" = none of the well-known profiles)
     std::string library;             // Header.library (writer name and version)
     std::string compression{"zstd"};  // "zstd" or "" (uncompressed chunks)
-    int zstd_level{-1};  // gdnav's samples are noisy doubles: level 3 gains nothing over -1 (2 % smaller), at half the speed
+    int zstd_level{-1};  // gdnav's samples are noisy doubles: higher levels barely shrink them and are much slower
+                         // (docs/viewing.md, "Size and cost")
     std::size_t chunk_bytes{1u << 20};  // uncompressed records per chunk before it is written
 };
 

@@ -1,5 +1,5 @@
 #pragma once
-// Error-state (multiplicative) formulation of the attitude filter (issue 14 item 2; docs/navigation.md,
+// Error-state (multiplicative) formulation of the attitude filter (docs/navigation.md,
 // "Error-state attitude filter"). Selected by `attitude.filter: error_state` in a variant file
 // (config/nav/variants/att_error_state.yaml); AttitudeFilter calls these functions instead of its additive EKF.
 //

@@ -1,9 +1,9 @@
 #pragma once
-// Sanity checks of the samples a navigation filter reads (issue 11, item 5). Samples reach the filters over DDS,
-// from the simulated sensors, from external members (a hardware-in-the-loop sensor, another team's filter) or
-// through an injected fault, so a filter cannot assume they are finite or physical. Every filter checks each of
-// its inputs on every step; a sample that fails is rejected: the filter skips the observation rows that sample
-// feeds (or, for an estimate from another filter used as a model input, holds the last good one), counts the
+// Sanity checks of the samples a navigation filter reads (docs/navigation.md, "Input checks"). Samples reach the
+// filters over DDS, from the simulated sensors, from external members (a hardware-in-the-loop sensor, another team's
+// filter) or through an injected fault, so a filter cannot assume they are finite or physical. Every filter checks
+// each of its inputs on every step; a sample that fails is rejected: the filter skips the observation rows that
+// sample feeds (or, for an estimate from another filter used as a model input, holds the last good one), counts the
 // rejection per input, and its state never sees the value. A nominal sample passes every check, so runs with
 // clean inputs are bit-identical to the filters without the checks.
 //

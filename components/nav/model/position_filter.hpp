@@ -16,7 +16,7 @@
 // GNSS-denied phase: a 6-state EKF [f_ib_b, E_acc] (static, y = f + E_acc, H = [I I]) started from the aided
 //   filter's sub-state and covariance blocks; wind and dp frozen at their values of the last valid fix; position,
 //   velocity, wind and altitude by the variant's rules (denied_rules.hpp), seeded with the aided filter's last state.
-// GNSS integrity (issue 11; tuning `position.gnss_integrity`, docs/navigation.md "GNSS integrity and re-acquisition"):
+// GNSS integrity (tuning `position.gnss_integrity`, docs/navigation.md "GNSS integrity and re-acquisition"):
 //   chi-square gate: on a fix step of the aided phase, the GNSS part of the innovation (v_n, lon, lat, h; lon/lat
 //     turned into metres) and its covariance S = H P- H^T + R give d2 = r^T S^-1 r (6 dof); a fix with
 //     d2 > gate_chi2_6dof is rejected (counted; the step updates with the accelerometer only). After
