@@ -25,7 +25,7 @@ namespace {
 constexpr std::int64_t kFormatVersion = 1;
 
 // Holds SIGINT/SIGTERM while the file is being updated: a process without handlers (the direct layout) then dies
-// after the update, never in the middle of it. (SIGKILL cannot be held; that window is a few milliseconds.)
+// after the update, never in the middle of it. (SIGKILL cannot be held.)
 class SignalHold {
 public:
     SignalHold() {
@@ -208,7 +208,7 @@ private:
 
 void register_nav_recorder(runtime::ComponentRegistry& reg) {
     reg.add("nav_recorder", "navigation errors, online metrics and HDF5 time series (run.h5, metrics.yaml)",
-            [](const std::string& n) { return std::make_unique<NavRecorder>(n); });
+            runtime::make_factory<NavRecorder>());
 }
 
 }  // namespace gdnav::nav_recorder
