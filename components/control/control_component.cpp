@@ -55,7 +55,7 @@ private:
 
 void register_control_component(runtime::ComponentRegistry& reg) {
     reg.add("control", "autopilot PID loops at 50 Hz: targets + estimates -> ControlCommands",
-            [](const std::string& n) { return std::make_unique<ControlComponent>(n); });
+            runtime::make_factory<ControlComponent>());
 }
 
 }  // namespace gdnav::control

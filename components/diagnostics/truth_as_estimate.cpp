@@ -47,7 +47,7 @@ private:
 
 void register_diagnostics(runtime::ComponentRegistry& reg) {
     reg.add("truth_as_estimate", "diagnostic: Truth republished as the navigation estimate topics",
-            [](const std::string& n) { return std::make_unique<TruthAsEstimate>(n); });
+            runtime::make_factory<TruthAsEstimate>());
 }
 
 }  // namespace gdnav::diagnostics

@@ -160,7 +160,7 @@ private:
 
 void register_flight_physics(runtime::ComponentRegistry& reg) {
     reg.add("flight_physics", "Mugin equations of motion, wind, turbulence, atmosphere: ControlCommands -> Truth",
-            [](const std::string& n) { return std::make_unique<FlightPhysicsComponent>(n); });
+            runtime::make_factory<FlightPhysicsComponent>());
 }
 
 }  // namespace gdnav::physics

@@ -57,7 +57,7 @@ private:
 
 void register_guidance_component(runtime::ComponentRegistry& reg) {
     reg.add("guidance", "mission operations and triggers: estimates -> GuidanceTargets",
-            [](const std::string& n) { return std::make_unique<GuidanceComponent>(n); });
+            runtime::make_factory<GuidanceComponent>());
 }
 
 }  // namespace gdnav::guidance

@@ -128,7 +128,7 @@ void LiveBridge::finish(bool) {
 
 void register_live(runtime::ComponentRegistry& reg) {
     reg.add("live", "streams topics to Foxglove over the Foxglove WebSocket protocol (gdnav run --live; docs/viewing.md)",
-            [](const std::string& n) { return std::make_unique<LiveBridge>(n); });
+            runtime::make_factory<LiveBridge>());
 }
 
 }  // namespace gdnav::live

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include <spdlog/spdlog.h>
@@ -11,6 +12,7 @@
 #include "model/position_filter.hpp"
 #include "nav_convert.hpp"
 #include "framework/run_config.hpp"
+#include "rejection_report.hpp"
 
 namespace gdnav::nav {
 
@@ -23,8 +25,7 @@ namespace {
 // The tuning file holds one section per filter (air, attitude, position) and a variant file one per filter it changes
 // (attitude, position). Each file is validated whole wherever it is read: every section is parsed by its filter's
 // parser and finish() runs on the whole file, so an unknown or misspelt key anywhere in it — also at the top level or
-// in another filter's section — is an error, whichever nav components the run has. (Only the component's own
-// section used to be finished: unknown keys elsewhere in the file were silently ignored.)
+// in another filter's section — is an error, whichever nav components the run has.
 struct NavFiles {
     config::Config tuning;   // the whole tuning file
     config::Config variant;  // the whole variant file
@@ -57,27 +58,23 @@ std::optional<InitMode> init_override(const config::Config& cfg) {
                                                                                       : InitMode::kMeasurements;
 }
 
-// Rejected-sample counts on ComponentStatus (MODE): at the first rejection, then at most once per kPeriod_s of
-// simulated time while the count grows, and once more on the last step of the run (see report_last()).
-class CountReport {
-public:
-    static constexpr double kPeriod_s = 10.0;
-    bool due(double t_s, std::uint64_t total) {
-        if (total <= reported_ || (reported_ > 0 && t_s - t_reported_s_ < kPeriod_s)) return false;
-        reported_ = total;
-        t_reported_s_ = t_s;
-        return true;
+// Configures a filter that has a variant (attitude, position) from its sections of both files, then applies the
+// component's `init_mode` override, if any.
+template <class Filter>
+void configure_with_variant(Filter& filter, const NavFiles& files, const char* section, const config::Config& cfg,
+                            rnd::Stream& stream) {
+    filter.configure(files.tuning.child(section), files.variant.child(section), stream.child("filter"));
+    if (auto m = init_override(cfg)) {
+        typename Filter::Tuning t = filter.tuning();
+        t.init_mode = *m;
+        filter.configure(t, stream.child("filter"));
     }
-
-private:
-    std::uint64_t reported_{0};
-    double t_reported_s_{-std::numeric_limits<double>::infinity()};
-};
+}
 
 // ------------------------------------------------------------------------------------------------ nav_air
-class NavAir final : public runtime::Component {
+class NavAir final : public RejectionReporting {
 public:
-    using Component::Component;
+    using RejectionReporting::RejectionReporting;
     void configure(const config::Config& cfg, const runtime::RunInfo&, rnd::Stream& stream) override {
         const NavFiles files = load_nav_files(cfg, false);
         filter_.configure(files.tuning.child("air"), stream);
@@ -87,27 +84,24 @@ public:
         const AirSample a = from_msg(air_.get());
         const AtmSample p = from_msg(atm_.get());
         if (!filter_.initialized() && (!checks::air_ok(a) || !checks::atm_ok(p))) {
-            ++init_rejected_;  // wait for a good pair
+            reject_before_init();  // wait for a good pair
             return;
         }
         const AirDataEstimate e =
             filter_.initialized() ? filter_.step(ctx.k, ctx.t_s, a, p) : filter_.initialize(ctx.k, ctx.t_s, a, p);
         to_msg(e, out_.value());
-        if (report_.due(ctx.t_s, total()) || (ctx.last && total() > 0)) publish_status(counts(ctx.last));
-    }
-    void finish(bool) override {
-        if (total() > 0) spdlog::info("[{}] {}", name(), counts(true));
+        report_counts(ctx);
     }
 
 private:
-    [[nodiscard]] std::uint64_t total() const { return filter_.rejections().total() + init_rejected_; }
-    [[nodiscard]] std::string counts(bool summary) const {
-        const auto& r = filter_.rejections();
-        return fmt::format("{}rejected samples: AirSample {}, AtmSample {}, before initialisation {} (total {})",
-                           summary ? "end of run: " : "", r.air, r.atm, init_rejected_, total());
+    [[nodiscard]] std::uint64_t total() const override {
+        return filter_.rejections().total() + rejected_before_init();
     }
-    std::uint64_t init_rejected_{0};
-    CountReport report_;
+    [[nodiscard]] std::string count_details() const override {
+        const auto& r = filter_.rejections();
+        return fmt::format("AirSample {}, AtmSample {}, before initialisation {} (total {})", r.air, r.atm,
+                           rejected_before_init(), total());
+    }
 
     Input<msg::AirSample> air_{*this, topics::kAir};
     Input<msg::AtmSample> atm_{*this, topics::kAtm};
@@ -116,17 +110,11 @@ private:
 };
 
 // ------------------------------------------------------------------------------------------------ nav_att
-class NavAtt final : public runtime::Component {
+class NavAtt final : public RejectionReporting {
 public:
-    using Component::Component;
+    using RejectionReporting::RejectionReporting;
     void configure(const config::Config& cfg, const runtime::RunInfo&, rnd::Stream& stream) override {
-        const NavFiles files = load_nav_files(cfg, true);
-        filter_.configure(files.tuning.child("attitude"), files.variant.child("attitude"), stream.child("filter"));
-        if (auto m = init_override(cfg)) {
-            AttitudeFilter::Tuning t = filter_.tuning();
-            t.init_mode = *m;
-            filter_.configure(t, stream.child("filter"));
-        }
+        configure_with_variant(filter_, load_nav_files(cfg, true), "attitude", cfg, stream);
     }
     void step(const runtime::StepContext& ctx) override {
         if (!imu_.available() || !mag_.available()) return;
@@ -140,30 +128,25 @@ public:
             if (!air_.available() || !gnss_.available() || !gnss_.get().fix_valid()) return;  // wait for a fix
             const GnssSample gnss = from_msg(gnss_.get());
             if (!checks::imu_ok(imu) || !checks::mag_ok(mag) || !checks::gnss_fix_ok(gnss)) {
-                ++init_rejected_;  // wait for good samples
+                reject_before_init();  // wait for good samples
                 return;
             }
             const Alignment align = alignment_from_msg(imu_.get(), &mag_.get());
             e = filter_.initialize(ctx.k, ctx.t_s, imu, mag, from_msg(air_.get()), gnss, &align);
         }
         to_msg(e, out_.value());
-        if (report_.due(ctx.t_s, total()) || (ctx.last && total() > 0)) publish_status(counts(ctx.last));
-    }
-    void finish(bool) override {
-        if (total() > 0) spdlog::info("[{}] {}", name(), counts(true));
+        report_counts(ctx);
     }
 
 private:
-    [[nodiscard]] std::uint64_t total() const { return filter_.rejections().total() + init_rejected_; }
-    [[nodiscard]] std::string counts(bool summary) const {
-        const auto& r = filter_.rejections();
-        return fmt::format(
-            "{}rejected samples: ImuSample {}, MagSample {}, PositionEstimate (p_n) {}, before initialisation {} "
-            "(total {})",
-            summary ? "end of run: " : "", r.imu, r.mag, r.position, init_rejected_, total());
+    [[nodiscard]] std::uint64_t total() const override {
+        return filter_.rejections().total() + rejected_before_init();
     }
-    std::uint64_t init_rejected_{0};
-    CountReport report_;
+    [[nodiscard]] std::string count_details() const override {
+        const auto& r = filter_.rejections();
+        return fmt::format("ImuSample {}, MagSample {}, PositionEstimate (p_n) {}, before initialisation {} (total {})",
+                           r.imu, r.mag, r.position, rejected_before_init(), total());
+    }
 
     Input<msg::ImuSample> imu_{*this, topics::kImu};
     Input<msg::MagSample> mag_{*this, topics::kMag};
@@ -176,17 +159,11 @@ private:
 };
 
 // ------------------------------------------------------------------------------------------------ nav_pos
-class NavPos final : public runtime::Component {
+class NavPos final : public RejectionReporting {
 public:
-    using Component::Component;
+    using RejectionReporting::RejectionReporting;
     void configure(const config::Config& cfg, const runtime::RunInfo&, rnd::Stream& stream) override {
-        const NavFiles files = load_nav_files(cfg, true);
-        filter_.configure(files.tuning.child("position"), files.variant.child("position"), stream.child("filter"));
-        if (auto m = init_override(cfg)) {
-            PositionFilter::Tuning t = filter_.tuning();
-            t.init_mode = *m;
-            filter_.configure(t, stream.child("filter"));
-        }
+        configure_with_variant(filter_, load_nav_files(cfg, true), "position", cfg, stream);
     }
     void step(const runtime::StepContext& ctx) override {
         if (!imu_.available() || !air_.available() || !att_.available()) return;
@@ -208,7 +185,7 @@ public:
         if (filter_.initialized()) {
             const std::uint64_t gate_before = filter_.rejections().gnss_gate;
             e = filter_.step(ctx.k, ctx.t_s, imu, gnss, air, att);
-            if (filter_.rejections().gnss_gate > gate_before && ctx.t_s - t_gate_status_s_ >= CountReport::kPeriod_s) {
+            if (filter_.rejections().gnss_gate > gate_before && ctx.t_s - t_gate_status_s_ >= kPeriod_s) {
                 t_gate_status_s_ = ctx.t_s;
                 publish_status(fmt::format("GNSS fix rejected by the chi-square gate: d2 = {:.1f} > {} ({} rejected)",
                                            filter_.gate_d2_last(), filter_.tuning().gate_chi2_6dof,
@@ -218,7 +195,7 @@ public:
             if (!gnss.fix_valid) return;  // wait for the first fix
             if (!checks::gnss_fix_ok(gnss) || !checks::imu_ok(imu) || !checks::air_estimate_ok(air) ||
                 !checks::attitude_estimate_ok(att)) {
-                ++init_rejected_;  // wait for good samples
+                reject_before_init();  // wait for good samples
                 return;
             }
             const Alignment align = alignment_from_msg(imu_.get());  // E_acc only
@@ -244,7 +221,7 @@ public:
             publish_status(fmt::format("GNSS re-acquired: back to GNSS-aided after {} consecutive consistent fixes "
                                        "({:.2f} s denied)",
                                        filter_.tuning().reacquire_fixes, ctx.t_s - t_lost_s_));
-        if (report_.due(ctx.t_s, total()) || (ctx.last && total() > 0)) publish_status(counts(ctx.last));
+        report_counts(ctx);
         to_msg(e, out_.value());
     }
     void finish(bool) override {
@@ -256,22 +233,19 @@ public:
     }
 
 private:
-    [[nodiscard]] std::uint64_t total() const {
+    [[nodiscard]] std::uint64_t total() const override {
         const auto& r = filter_.rejections();
-        return r.inputs() + r.gnss_gate + r.gnss_reacquire + init_rejected_;
+        return r.inputs() + r.gnss_gate + r.gnss_reacquire + rejected_before_init();
     }
-    [[nodiscard]] std::string counts(bool summary) const {
+    [[nodiscard]] std::string count_details() const override {
         const auto& r = filter_.rejections();
         return fmt::format(
-            "{}rejected samples: ImuSample {}, GnssSample (invalid) {}, AirDataEstimate {}, AttitudeEstimate {}, "
-            "before initialisation {}; GNSS fixes rejected by the chi-square gate {} (accepted {}, largest accepted "
-            "d2 {:.1f}), refused for re-acquisition {}; re-acquisitions {} (total rejected {})",
-            summary ? "end of run: " : "", r.imu, r.gnss_invalid, r.air, r.attitude, init_rejected_, r.gnss_gate,
-            filter_.gate_accepted(), filter_.gate_d2_max_accepted(), r.gnss_reacquire, filter_.reacquisitions(),
-            total());
+            "ImuSample {}, GnssSample (invalid) {}, AirDataEstimate {}, AttitudeEstimate {}, before initialisation {}; "
+            "GNSS fixes rejected by the chi-square gate {} (accepted {}, largest accepted d2 {:.1f}), refused for "
+            "re-acquisition {}; re-acquisitions {} (total rejected {})",
+            r.imu, r.gnss_invalid, r.air, r.attitude, rejected_before_init(), r.gnss_gate, filter_.gate_accepted(),
+            filter_.gate_d2_max_accepted(), r.gnss_reacquire, filter_.reacquisitions(), total());
     }
-    std::uint64_t init_rejected_{0};
-    CountReport report_;
     double t_gate_status_s_{-std::numeric_limits<double>::infinity()};
     double t_lost_s_{0.0};
 

@@ -208,7 +208,7 @@ private:
 
 void register_nav_recorder(runtime::ComponentRegistry& reg) {
     reg.add("nav_recorder", "navigation errors, online metrics and HDF5 time series (run.h5, metrics.yaml)",
-            [](const std::string& n) { return std::make_unique<NavRecorder>(n); });
+            runtime::make_factory<NavRecorder>());
 }
 
 }  // namespace gdnav::nav_recorder

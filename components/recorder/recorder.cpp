@@ -89,7 +89,7 @@ void Recorder::finish(bool completed) {
 
 void register_recorder(runtime::ComponentRegistry& reg) {
     reg.add("recorder", "records topics to <out>/record (run.mcap: indexed MCAP, CDR + omgidl; digest.yaml)",
-            [](const std::string& n) { return std::make_unique<Recorder>(n); });
+            runtime::make_factory<Recorder>());
 }
 
 }  // namespace gdnav::recorder

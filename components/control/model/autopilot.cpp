@@ -1,6 +1,7 @@
 #include "autopilot.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 namespace gdnav::control {
@@ -9,6 +10,16 @@ namespace {
 double deg(double rad) { return math::rad2deg(rad); }
 // Bearing-type error in degrees, wrapped to (-180, 180].
 double bearing_error_deg(double target_rad, double measured_rad) { return deg(math::wrap_pi(target_rad - measured_rad)); }
+
+// A channel entering a new mode: its outer loop takes that mode's gains (where the mode has an outer loop) and
+// starts from rest, so no integral or derivative state carries over from another mode.
+template <class Mode>
+void enter_mode(std::optional<Mode>& current, Mode next, DiscretePid& outer, const AutopilotConfig& cfg) {
+    if (current == next) return;
+    current = next;
+    if (gnc::has_outer_loop(next)) outer.set_gains(cfg.outer_gains(next));
+    outer.reset();
+}
 }  // namespace
 
 void Autopilot::configure(const config::Config& cfg) { configure(read_autopilot_config(cfg)); }
@@ -47,11 +58,7 @@ void Autopilot::initialize(const ControlEstimates& first_estimate) {
 
 double Autopilot::elevator_command_deg(const gnc::ChannelTargets& t, const LoopMeasurements& m) {
     using M = gnc::ElevatorMode;
-    if (elv_mode_ != t.elevator_mode) {
-        elv_mode_ = t.elevator_mode;
-        if (gnc::has_outer_loop(t.elevator_mode)) elv_outer_.set_gains(cfg_.outer_gains(t.elevator_mode));
-        elv_outer_.reset();
-    }
+    enter_mode(elv_mode_, t.elevator_mode, elv_outer_, cfg_);
     switch (t.elevator_mode) {
         case M::pitch: return deg(t.elevator_target);
         case M::pressure_altitude: return elv_outer_.step(t.elevator_target - m.pressure_altitude_m);
@@ -63,11 +70,7 @@ double Autopilot::elevator_command_deg(const gnc::ChannelTargets& t, const LoopM
 
 double Autopilot::aileron_command_deg(const gnc::ChannelTargets& t, const LoopMeasurements& m) {
     using M = gnc::AileronMode;
-    if (ail_mode_ != t.aileron_mode) {
-        ail_mode_ = t.aileron_mode;
-        if (gnc::has_outer_loop(t.aileron_mode)) ail_outer_.set_gains(cfg_.outer_gains(t.aileron_mode));
-        ail_outer_.reset();
-    }
+    enter_mode(ail_mode_, t.aileron_mode, ail_outer_, cfg_);
     switch (t.aileron_mode) {
         case M::bank: return deg(t.aileron_target);
         case M::bearing: return ail_outer_.step(bearing_error_deg(t.aileron_target, m.ground_bearing_rad));

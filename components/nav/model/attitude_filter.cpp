@@ -16,6 +16,22 @@ using namespace tuning_ranges;
 
 using filters::Quat4;
 
+namespace {
+// The update with one sensor's rows of the measurement only: the IMU's (the first 6) or the magnetometer's (the
+// last 3), when the other sensor's sample was rejected. Returns the update's NIS.
+template <int N>
+double one_sensor_update(filters::Vec<N>& x, filters::SqMat<N>& p, const att::MeasVec& r,
+                         const filters::Mat<att::kM, N>& h, const att::MeasVec& r_diag, bool imu) {
+    if (imu)
+        return filters::joseph_update_diag<N, 6>(x, p, r.head<6>().eval(), h.template topRows<6>().eval(),
+                                                 r_diag.head<6>().eval())
+            .nis;
+    return filters::joseph_update_diag<N, 3>(x, p, r.tail<3>().eval(), h.template bottomRows<3>().eval(),
+                                             r_diag.tail<3>().eval())
+        .nis;
+}
+}  // namespace
+
 att::SpecificForceModel parse_specific_force_model(const config::Config& variant) {
     const std::string m =
         variant.get_choice("specific_force", {"baseline", "zero_fb_derivatives", "zero_fn_derivatives"});
@@ -181,15 +197,7 @@ AttitudeEstimate AttitudeFilter::step(std::uint64_t k, double t_s, const ImuSamp
     } else if (imu_good || mag_good) {
         const att::MeasVec r = y - att::observe(x_, pn, tun_.model);
         const att::MeasJac h = att::observation_jacobian(x_, pn, tun_.model);
-        if (imu_good) {
-            last_nis_ = filters::joseph_update_diag<att::kN, 6>(x_, p_, r.head<6>().eval(), h.topRows<6>().eval(),
-                                                                tun_.r_diag.head<6>().eval())
-                            .nis;
-        } else {
-            last_nis_ = filters::joseph_update_diag<att::kN, 3>(x_, p_, r.tail<3>().eval(), h.bottomRows<3>().eval(),
-                                                                tun_.r_diag.tail<3>().eval())
-                            .nis;
-        }
+        last_nis_ = one_sensor_update<att::kN>(x_, p_, r, h, tun_.r_diag, imu_good);
     } else {
         last_nis_ = 0.0;
     }
@@ -205,14 +213,8 @@ void AttitudeFilter::step_error_state(bool imu_good, bool mag_good, const att::M
     eskf::ErrVec dx = eskf::ErrVec::Zero();
     if (imu_good && mag_good) {
         last_nis_ = filters::joseph_update_diag<eskf::kN, att::kM>(dx, pe_, r, h, tun_.r_diag).nis;
-    } else if (imu_good) {
-        last_nis_ = filters::joseph_update_diag<eskf::kN, 6>(dx, pe_, r.head<6>().eval(), h.topRows<6>().eval(),
-                                                             tun_.r_diag.head<6>().eval())
-                        .nis;
     } else {
-        last_nis_ = filters::joseph_update_diag<eskf::kN, 3>(dx, pe_, r.tail<3>().eval(), h.bottomRows<3>().eval(),
-                                                             tun_.r_diag.tail<3>().eval())
-                        .nis;
+        last_nis_ = one_sensor_update<eskf::kN>(dx, pe_, r, h, tun_.r_diag, imu_good);
     }
     eskf::inject(x_, pe_, dx);
 }

@@ -15,6 +15,27 @@ const Range kRatio{0.0, 0.5};  // scale factor / cross coupling sigmas
 
 void read_description(const Config& cfg) { (void)cfg.get_string("description", ""); }
 
+// The keys of a triad grade that carry the sensor's unit (the file's units differ between gyroscopes and
+// accelerometers); scale_factor and cross_coupling are ratios and named alike in both.
+struct TriadKeys {
+    const char* bias_drift;
+    const char* system_noise;
+    const char* bias_offset;
+};
+
+// A whole triad grade file; `unit` converts the file's unit to SI (exact for 1.0).
+TriadGrade triad(const Config& cfg, const TriadKeys& keys, double unit) {
+    read_description(cfg);
+    TriadGrade g;
+    g.bias_drift = cfg.get_double(keys.bias_drift, kSigma) * unit;
+    g.system_noise = cfg.get_double(keys.system_noise, kSigma) * unit;
+    g.scale_factor = cfg.get_double("scale_factor", kRatio);
+    g.cross_coupling = cfg.get_double("cross_coupling", kRatio);
+    g.bias_offset = cfg.get_double(keys.bias_offset, kSigma) * unit;
+    cfg.finish();
+    return g;
+}
+
 ScalarGrade scalar(const Config& cfg, const char* noise_key, const char* offset_key, double unit) {
     ScalarGrade g;
     g.noise = cfg.get_double(noise_key, kSigma) * unit;
@@ -24,27 +45,11 @@ ScalarGrade scalar(const Config& cfg, const char* noise_key, const char* offset_
 }  // namespace
 
 TriadGrade parse_gyro_grade(const Config& cfg) {
-    read_description(cfg);
-    TriadGrade g;
-    g.bias_drift = cfg.get_double("bias_drift_deg_s1p5", kSigma) * math::kDeg;
-    g.system_noise = cfg.get_double("system_noise_deg_s0p5", kSigma) * math::kDeg;
-    g.scale_factor = cfg.get_double("scale_factor", kRatio);
-    g.cross_coupling = cfg.get_double("cross_coupling", kRatio);
-    g.bias_offset = cfg.get_double("bias_offset_deg_s", kSigma) * math::kDeg;
-    cfg.finish();
-    return g;
+    return triad(cfg, {"bias_drift_deg_s1p5", "system_noise_deg_s0p5", "bias_offset_deg_s"}, math::kDeg);
 }
 
 TriadGrade parse_acc_grade(const Config& cfg) {
-    read_description(cfg);
-    TriadGrade g;
-    g.bias_drift = cfg.get_double("bias_drift_m_s2p5", kSigma);
-    g.system_noise = cfg.get_double("system_noise_m_s1p5", kSigma);
-    g.scale_factor = cfg.get_double("scale_factor", kRatio);
-    g.cross_coupling = cfg.get_double("cross_coupling", kRatio);
-    g.bias_offset = cfg.get_double("bias_offset_m_s2", kSigma);
-    cfg.finish();
-    return g;
+    return triad(cfg, {"bias_drift_m_s2p5", "system_noise_m_s1p5", "bias_offset_m_s2"}, 1.0);
 }
 
 MagGrade parse_mag_grade(const Config& cfg) {

@@ -25,6 +25,17 @@ std::string available_grades(const std::filesystem::path& dir) {
     return s.empty() ? "none" : s;
 }
 
+// One group's section of the suite: its `grade` names the grade file (the name is kept in `name`). The section is
+// finished before the file is parsed, so a misspelt key in the suite is reported before any in the grade file.
+template <class Parse>
+auto group_grade(const Config& cfg, const char* group, const std::filesystem::path& grades_dir, std::string& name,
+                 Parse parse) {
+    const Config section = cfg.child(group);
+    const Config file = load_grade(section, "grade", grades_dir, group, name);
+    section.finish();
+    return parse(file);
+}
+
 }  // namespace
 
 Config load_grade(const Config& section, std::string_view key, const std::filesystem::path& grades_dir,
@@ -73,15 +84,8 @@ SensorSuiteParams parse_sensor_suite(const Config& cfg, const std::filesystem::p
     const double dt = cfg.get_double("sample_period_s", Range{1.0e-4, 1.0});
     const double t0 = cfg.get_double("start_time_s", Range{-1.0e7, 1.0e7});
 
-    const Config gyr = cfg.child("gyroscopes");
-    const Config gyr_file = load_grade(gyr, "grade", grades_dir, "gyroscopes", s.gyr_grade);
-    gyr.finish();
-    s.inertial.gyr = parse_gyro_grade(gyr_file);
-
-    const Config acc = cfg.child("accelerometers");
-    const Config acc_file = load_grade(acc, "grade", grades_dir, "accelerometers", s.acc_grade);
-    acc.finish();
-    s.inertial.acc = parse_acc_grade(acc_file);
+    s.inertial.gyr = group_grade(cfg, "gyroscopes", grades_dir, s.gyr_grade, parse_gyro_grade);
+    s.inertial.acc = group_grade(cfg, "accelerometers", grades_dir, s.acc_grade, parse_acc_grade);
 
     // Paper: 100 (baseline), 300 and 1000. The soft pull zone (20 steps) needs L >= 40.
     s.inertial.bias_drift_band = cfg.get_double("bias_drift_band", Range{40.0, 1.0e9});
@@ -89,21 +93,11 @@ SensorSuiteParams parse_sensor_suite(const Config& cfg, const std::filesystem::p
     s.inertial.dt_s = dt;
     s.alignment = AlignmentErrors::from_config(cfg.child("alignment"));
 
-    const Config mag = cfg.child("magnetometers");
-    const Config mag_file = load_grade(mag, "grade", grades_dir, "magnetometers", s.mag_grade);
-    mag.finish();
-    s.mag.grade = parse_mag_grade(mag_file);
+    s.mag.grade = group_grade(cfg, "magnetometers", grades_dir, s.mag_grade, parse_mag_grade);
     s.mag.dt_s = dt;
 
-    const Config air = cfg.child("air_data");
-    const Config air_file = load_grade(air, "grade", grades_dir, "air_data", s.air_grade);
-    air.finish();
-    s.air.grade = parse_air_grade(air_file);
-
-    const Config atm = cfg.child("atmospheric");
-    const Config atm_file = load_grade(atm, "grade", grades_dir, "atmospheric", s.atm_grade);
-    atm.finish();
-    s.atm.grade = parse_atm_grade(atm_file);
+    s.air.grade = group_grade(cfg, "air_data", grades_dir, s.air_grade, parse_air_grade);
+    s.atm.grade = group_grade(cfg, "atmospheric", grades_dir, s.atm_grade, parse_atm_grade);
 
     const Config gnss = cfg.child("gnss");
     const Config gnss_file = load_grade(gnss, "grade", grades_dir, "gnss", s.gnss_grade);
