@@ -127,15 +127,6 @@ std::map<std::string, std::string> read_digests(const fs::path& out) {
     return m;
 }
 
-fs::path temp_dir(const std::string& tag) {
-    static int counter = 0;
-    const fs::path p = fs::temp_directory_path() /
-                       ("gdnav-test-" + std::to_string(getpid()) + "-" + tag + "-" + std::to_string(counter++));
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p;
-}
-
 std::string testchain_exe() { return GDNAV_TESTCHAIN_EXE; }
 std::string chain_scenario() { return GDNAV_CHAIN_SCENARIO; }
 

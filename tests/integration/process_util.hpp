@@ -7,6 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "run_folders.hpp"
+#include "test_paths.hpp"
+
 namespace gdnav::testing {
 
 struct Result {
@@ -41,8 +44,6 @@ std::map<std::string, std::string> read_digests(const std::filesystem::path& out
 // Checks (EXPECT) that every Markdown table in `md` has the same number of cells in each of its lines (escaped \|
 // not counted) and returns how many tables there are.
 int expect_consistent_markdown_tables(const std::string& md);
-// A fresh temporary directory for one test.
-std::filesystem::path temp_dir(const std::string& tag);
 // A TCP port on 127.0.0.1 that was free a moment ago (bound to 0, read back, closed); -1 if none.
 int free_port();
 // Path of gdnav-testchain and of the chain scenario.
