@@ -25,30 +25,30 @@ install(FILES idl/gdnav.idl DESTINATION ${GDNAV_SHARE_DIR}/idl)
 # Headers at their paths of gdnav 0.1 (include/gdnav/runtime/...), each forwarding to where it lives now, so a member
 # built against the old headers needs only a rebuild (docs/external.md, "Include paths").
 set(_gdnav_moved_headers
-  dds/clock/clock.hpp dds/clock/clock.hpp
-  framework/component.hpp framework/component.hpp
-  dds/dds_context.hpp dds/dds_context.hpp
-  dds/host/dds_host.hpp dds/host/dds_host.hpp
-  framework/direct_executor.hpp framework/direct_executor.hpp
-  framework/faults/fault_schedule.hpp framework/faults/fault_schedule.hpp
-  framework/faults/input_faults.hpp framework/faults/input_faults.hpp
-  framework/fields/field_table.hpp framework/fields/field_table.hpp
-  framework/graph.hpp framework/graph.hpp
-  framework/lateness.hpp framework/lateness.hpp
-  framework/lockstep.hpp framework/lockstep.hpp
-  msgs/message_ops.hpp msgs/message_ops_impl.hpp
-  msgs/messages.hpp msgs/messages.hpp
-  dds/host/mirror.hpp dds/host/mirror.hpp
-  framework/msg_eigen.hpp framework/msg_eigen.hpp
-  dds/process/process_priority.hpp dds/process/process_priority.hpp
-  dds/process/process_signals.hpp dds/process/process_signals.hpp
-  framework/registry.hpp framework/registry.hpp
-  framework/run_config.hpp framework/run_config.hpp
-  framework/scenario_generator.hpp framework/scenario_generator.hpp
-  dds/security/security.hpp dds/security/security.hpp
-  dds/filters/status_filter.hpp dds/filters/status_filter.hpp
-  dds/filters/stride_filter.hpp dds/filters/stride_filter.hpp
-  framework/topic_types.hpp framework/topic_types.hpp)
+  runtime/clock.hpp dds/clock/clock.hpp
+  runtime/component.hpp framework/component.hpp
+  runtime/dds_context.hpp dds/dds_context.hpp
+  runtime/dds_host.hpp dds/host/dds_host.hpp
+  runtime/direct_executor.hpp framework/direct_executor.hpp
+  runtime/faults/fault_schedule.hpp framework/faults/fault_schedule.hpp
+  runtime/faults/input_faults.hpp framework/faults/input_faults.hpp
+  runtime/fields/field_table.hpp framework/fields/field_table.hpp
+  runtime/graph.hpp framework/graph.hpp
+  runtime/lateness.hpp framework/lateness.hpp
+  runtime/lockstep.hpp framework/lockstep.hpp
+  runtime/message_traits.hpp msgs/message_ops_impl.hpp
+  runtime/messages.hpp msgs/messages.hpp
+  runtime/mirror.hpp dds/host/mirror.hpp
+  runtime/msg_eigen.hpp framework/msg_eigen.hpp
+  runtime/process_priority.hpp dds/process/process_priority.hpp
+  runtime/process_signals.hpp dds/process/process_signals.hpp
+  runtime/registry.hpp framework/registry.hpp
+  runtime/run_config.hpp framework/run_config.hpp
+  runtime/scenario_generator.hpp framework/scenario_generator.hpp
+  runtime/security/security.hpp dds/security/security.hpp
+  runtime/status_filter.hpp dds/filters/status_filter.hpp
+  runtime/stride_filter.hpp dds/filters/stride_filter.hpp
+  runtime/topic_types.hpp framework/topic_types.hpp)
 while(_gdnav_moved_headers)
   list(POP_FRONT _gdnav_moved_headers _old _new)
   set(_fwd ${CMAKE_BINARY_DIR}/compat_headers/${_old})
