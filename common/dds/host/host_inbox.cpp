@@ -2,8 +2,6 @@
 
 #include <fastdds/dds/core/status/PublicationMatchedStatus.hpp>
 
-#include "dds/host/mirror.hpp"
-
 namespace gdnav::runtime::host {
 
 long inbox_index(const Channel& ch, std::uint64_t next_step, std::uint64_t s) {
@@ -43,22 +41,6 @@ bool hand_over(const Route& r, const Local& consumer, const void* sample, std::u
     return true;
 }
 
-bool step_missed(const Local& l, std::uint64_t k) {
-    for (const Channel* ch : l.inputs) {
-        if (ch->lost || ch->free) continue;
-        const auto lag = static_cast<std::uint64_t>(ch->port->lag());
-        if (k < lag) continue;
-        const std::uint64_t need = k - lag;
-        if (!ch->port->on_stride(need) || need < ch->lost_until) continue;
-        const std::size_t i = need % kInboxRing;
-        const bool have = ch->full[i] && ch->slot_step[i] == need;
-        if (!have && ch->seen && ch->newest > need) return true;
-    }
-    return false;
-}
-
-namespace {
-
 std::unique_ptr<MatchCount> count_matches(eprosima::fastdds::dds::DataWriter* writer) {
     auto m = std::make_unique<MatchCount>();
     writer->set_listener(m.get(), eprosima::fastdds::dds::StatusMask::publication_matched());
@@ -68,19 +50,8 @@ std::unique_ptr<MatchCount> count_matches(eprosima::fastdds::dds::DataWriter* wr
     return m;
 }
 
-}  // namespace
-
 Output make_output(OutputBase* port, eprosima::fastdds::dds::DataWriter* writer) {
     return Output{port, writer, {}, count_matches(writer), nullptr, nullptr};
-}
-
-void add_mirror(Output& o, eprosima::fastdds::dds::DataWriter* mirror) {
-    o.mirror = mirror;
-    o.mirror_matched = count_matches(mirror);
-}
-
-bool mirror_due(const Output& o, std::uint64_t k) {
-    return o.mirror != nullptr && k % kMirrorStride == 0 && o.mirror_matched->readers.load() > 0;
 }
 
 bool read_outside(const Output& o) { return o.matched->readers.load() > static_cast<int>(o.routes.size()); }

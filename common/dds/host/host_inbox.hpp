@@ -1,8 +1,9 @@
 #pragma once
-// The DDS host's per-input inboxes and local members (dds_host.cpp, host/), and the in-process hand-over between members
-// hosted in the same process (issue 13 item 1): a sample written by a local member goes straight into the inboxes of
-// the local members that read it (a copy, no serialisation, no transport, no thread wake-up); it is published on DDS
-// only while a reader outside the process is matched (another process's member, a recorder, a monitoring tool).
+// The DDS host's records: the inbox of each input, the outputs and the local members (shared by the host's parts,
+// host_impl.hpp), and the in-process hand-over between members hosted in the same process: a sample written by a
+// local member goes straight into the inboxes of the local members that read it (a copy, no serialisation, no
+// transport, no thread wake-up); it is published on DDS only while a reader outside the process is matched (another
+// process's member, a recorder, a monitoring tool).
 #include <array>
 #include <atomic>
 #include <cstdint>
@@ -39,7 +40,7 @@ struct Channel {
     std::unique_ptr<faults::InputFaults> faults;  // scheduled faults on this input (nullptr: none)
     std::uint64_t lost_until{0};  // its producer rejoined: samples of steps below this one are lost
     bool revived{false};
-    bool deferred{false};         // an observer's input: its reader is made at CONFIGURE (dds/host/mirror.hpp)
+    bool deferred{false};         // an observer's input: its reader is made at CONFIGURE (host_observers.hpp)
     bool seen{false};             // a sample has arrived (any step)
     std::uint64_t newest{0};      // the newest step of the samples arrived (an observer's lost-step test)
     void saw(std::uint64_t s) {
@@ -68,17 +69,15 @@ struct Output {
     eprosima::fastdds::dds::DataWriter* writer{nullptr};
     std::vector<Route> routes;  // local readers (their DDS readers are matched too: not counted as outside ones)
     std::unique_ptr<MatchCount> matched;  // listener of `writer` (outlives it: the host deletes DDS first)
-    // The decimated mirror of the topic for observers (dds/host/mirror.hpp; nullptr: none) and its readers.
+    // The decimated mirror of the topic for observers (host_observers.hpp; nullptr: none) and its readers.
     eprosima::fastdds::dds::DataWriter* mirror{nullptr};
     std::unique_ptr<MatchCount> mirror_matched;
 };
 
+// The matched-reader count of `writer`, kept up to date from now on (the listener must outlive the writer).
+std::unique_ptr<MatchCount> count_matches(eprosima::fastdds::dds::DataWriter* writer);
 // An output of a local member: its writer, with the matched-reader count kept up to date.
 Output make_output(OutputBase* port, eprosima::fastdds::dds::DataWriter* writer);
-// Gives `o` its mirror writer, with its matched-reader count kept up to date as well.
-void add_mirror(Output& o, eprosima::fastdds::dds::DataWriter* mirror);
-// Whether the mirror is due at step k: a mirror step, and somebody reads the mirror.
-bool mirror_due(const Output& o, std::uint64_t k);
 
 struct Local {
     Component* comp{nullptr};
@@ -90,12 +89,10 @@ struct Local {
     std::vector<Channel*> inputs;
     std::vector<Output> outputs;
     bool observer{false};          // Component::observer(): not in the barrier, best-effort inputs, skips lost steps
+    // In the clock's barrier (reports StepDone): not a member of a free-running host, not an observer.
+    bool barrier{true};
     std::uint64_t skipped{0};      // observer: steps not computed (a sample lost, or too late for the inbox)
 };
-
-// Observer `l` cannot compute step k any more: an input it reads at k has no sample of that step while a newer one
-// of the same input has arrived (one writer's samples arrive in order, so the missing one was lost).
-bool step_missed(const Local& l, std::uint64_t k);
 
 // Ring index for a sample of step s in `ch`, read by a member whose next step is next_step: kOlder when no step of
 // the member needs it any more, kTooFar when it is beyond the ring.

@@ -5,9 +5,9 @@
 // without observers writes nothing more. An observer (the live bridge) whose input has a stride that is a multiple
 // of kMirrorStride reads the mirror instead of the topic when reads_mirror() says every producer writes one: then
 // the producers' writers of the topic itself never see it, and deliver exactly what the run's own readers need.
-// (A writer-side content filter, dds/filters/stride_filter.hpp, delivers fewer samples too, but Fast DDS 2.9.1 still
-// sends a filtered reader GAPs and HEARTBEATs, and splits the writer's datagrams to the other readers: measured
-// +5.1 sendto per step for the bridge's eleven readers against +1.3 with mirrors.)
+// (The writer-side stride filter, dds/filters/stride_filter.hpp, delivers fewer samples too, but Fast DDS 2.9 still
+// sends a filtered reader GAPs and HEARTBEATs, and splits the writer's datagrams to the other readers; a mirror's
+// readers cost the topic's writers nothing: docs/notes/runtime-measurements.md, "Mirrors for the observers".)
 // Only gdnav's own hosts write mirrors: a producer run outside gdnav (an external member, another DDS vendor) need
 // not, so an observer reads the topic itself when any producer of it is external or not in the run's configuration.
 // Secure runs do not use mirrors (a PKI grants each identity its own topics, not mirrors of them).

@@ -1,10 +1,10 @@
-// An observer's lost-step rule (dds/host/host_inbox.hpp, host::step_missed): a step is given up only when an
+// An observer's lost-step rule (dds/host/host_observers.hpp, host::step_missed): a step is given up only when an
 // input it reads has no sample of that step while a newer sample of the same input has arrived (one writer's samples
 // arrive in order). Inboxes filled by hand, no DDS.
 #include <gtest/gtest.h>
 
 #include "chain_components.hpp"
-#include "dds/host/host_inbox.hpp"
+#include "dds/host/host_observers.hpp"
 
 using namespace gdnav;
 using namespace gdnav::runtime;

@@ -1,0 +1,222 @@
+#include "dds/host/host_inputs.hpp"
+
+#include <algorithm>
+
+#include <fastdds/dds/subscriber/SampleInfo.hpp>
+#include <spdlog/spdlog.h>
+
+#include "dds/host/host_observers.hpp"
+#include "framework/graph.hpp"
+
+namespace gdnav::runtime::host {
+
+using namespace eprosima::fastdds::dds;
+
+namespace {
+
+// The faults of `schedule` on input `ch` (nullptr when none concerns it).
+std::unique_ptr<faults::InputFaults> input_faults(const Channel& ch, const faults::FaultSchedule& schedule,
+                                                  const std::vector<msg::MemberInfo>& table, const RunInfo& ri) {
+    std::vector<std::string> names;
+    for (auto i : ch.producers) names.push_back(table[i].name().to_string());
+    auto f = std::make_unique<faults::InputFaults>(schedule, ch.port->topic(), names, *ch.ops, ri);
+    if (f->empty()) f.reset();
+    return f;
+}
+
+}  // namespace
+
+Inputs::~Inputs() {
+    for (auto& c : channels_) {
+        c->ops->destroy(c->scratch);
+        c->ops->destroy(c->latest);
+        for (void* s : c->slot) c->ops->destroy(s);
+    }
+}
+
+Channel* Inputs::add(InputBase* in) {
+    auto ch = std::make_unique<Channel>();
+    ch->port = in;
+    ch->ops = &in->ops();
+    ch->scratch = ch->ops->create();
+    ch->latest = ch->ops->create();
+    for (auto& s : ch->slot) s = ch->ops->create();
+    channels_.push_back(std::move(ch));
+    return channels_.back().get();
+}
+
+std::vector<DataReader*> Inputs::readers() const {
+    std::vector<DataReader*> v;
+    for (const auto& c : channels_)
+        if (c->reader != nullptr) v.push_back(c->reader);
+    return v;
+}
+
+void Inputs::configure(const Local& l, const std::vector<msg::MemberInfo>& table,
+                       const faults::FaultSchedule& schedule, const RunInfo& ri) {
+    for (Channel* ch : l.inputs) {
+        ch->producers.clear();
+        for (std::uint32_t i = 0; i < table.size(); ++i) {
+            const auto outs = split_topics(table[i].outputs().to_string());
+            if (std::find(outs.begin(), outs.end(), ch->port->topic()) != outs.end()) {
+                ch->producers.push_back(i);
+                ch->free = ch->free || table[i].free_running();
+            }
+        }
+        if (!schedule.empty()) ch->faults = input_faults(*ch, schedule, table, ri);
+        if (ch->producers.empty()) {
+            spdlog::warn("member '{}': no member of this run produces '{}'; input treated as lost", l.comp->name(),
+                         ch->port->topic());
+            ch->lost = true;
+            ch->port->mark_lost();
+        }
+        if (free_running_) ch->free = true;
+    }
+}
+
+bool Inputs::matched() const {
+    for (const auto& ch : channels_) {
+        SubscriptionMatchedStatus st;
+        ch->reader->get_subscription_matched_status(st);
+        if (st.current_count < static_cast<int>(ch->producers.size())) return false;
+    }
+    return true;
+}
+
+void Inputs::read(Local& l, Channel& ch, std::uint64_t run) {
+    if (ch.reader == nullptr) return;  // an observer's input before CONFIGURE (host_observers.hpp)
+    SampleInfo info;
+    while (ch.reader->take_next_sample(ch.scratch, &info) == ReturnCode_t::RETCODE_OK) {
+        if (!info.valid_data || ch.ops->run_of(ch.scratch) != run) continue;
+        if (ch.free) {
+            ch.ops->copy(ch.latest, ch.scratch);
+            ch.has_latest = true;
+            continue;
+        }
+        const std::uint64_t s = ch.ops->step_of(ch.scratch);
+        if (l.observer) ch.saw(s);  // only an observer's lost-step test reads it
+        long at = inbox_index(ch, l.next_step, s);
+        if (at == kOlder) continue;
+        if (at == kTooFar && l.observer) {
+            catch_up(l, ch, s);
+            at = inbox_index(ch, l.next_step, s);
+        }
+        if (at == kTooFar) {
+            warn_too_far(l, ch, s);
+            continue;
+        }
+        const auto i = static_cast<std::size_t>(at);
+        std::swap(ch.slot[i], ch.scratch);
+        ch.slot_step[i] = s;
+        ch.full[i] = true;
+    }
+}
+
+void Inputs::warn_too_far(const Local& l, const Channel& ch, std::uint64_t s) {
+    if (l.killed) return;  // a member killed by a fault does not read its inputs
+    spdlog::warn("input '{}': sample of step {} is too far ahead of step {}; dropped", ch.port->topic(), s,
+                 l.next_step);
+}
+
+bool Inputs::ready(const Local& l, std::uint64_t k) const {
+    for (Channel* ch : l.inputs) {
+        if (ch->lost) {
+            ch->port->bind(nullptr);
+            continue;
+        }
+        if (ch->free) {
+            ch->port->bind(ch->has_latest ? ch->latest : nullptr);
+            continue;
+        }
+        const std::uint64_t lag = static_cast<std::uint64_t>(ch->port->lag());
+        if (k < lag) {
+            ch->port->bind(nullptr);
+            continue;
+        }
+        const std::uint64_t need = k - lag;
+        if (!ch->port->on_stride(need)) {  // not a step it reads: nothing sent, nothing to wait for
+            ch->port->bind(nullptr);
+            continue;
+        }
+        if (need < ch->lost_until) {  // its producer was dead then
+            ch->port->set_lost(true);
+            continue;
+        }
+        if (ch->revived) ch->port->set_lost(false);
+        if (ch->faults && ch->faults->producer_killed(need)) {  // nothing was published: do not wait
+            ch->port->set_lost(true);
+            continue;
+        }
+        const std::size_t i = need % kInboxRing;
+        if (!ch->full[i] || ch->slot_step[i] != need) return false;
+        if (ch->faults) {
+            const auto d = ch->faults->apply(need, ch->slot[i]);
+            ch->port->set_lost(d.lost);
+            ch->port->bind(d.data);
+            continue;
+        }
+        ch->port->bind(ch->slot[i]);
+    }
+    return true;
+}
+
+void Inputs::record_lateness(const Local& l, std::uint64_t k) const {
+    if (free_running_) return;  // a free-running member's own inputs are not a deadline
+    for (Channel* ch : l.inputs) {
+        if (!ch->free || ch->lost) continue;
+        if (!ch->has_latest) {
+            ch->lateness.add(-1);
+            continue;
+        }
+        const auto need = static_cast<std::int64_t>(k) - static_cast<std::int64_t>(ch->port->lag());
+        const auto have = static_cast<std::int64_t>(ch->ops->step_of(ch->latest));
+        ch->lateness.add(std::max<std::int64_t>(need - have, 0));  // a newer sample than needed is on time
+    }
+}
+
+void Inputs::apply_dead_mask(std::uint64_t dead_mask) {
+    for (auto& ch : channels_) {
+        if (ch->lost || ch->producers.empty()) continue;
+        bool all_dead = true;
+        for (auto i : ch->producers) all_dead = all_dead && ((dead_mask >> i) & 1u);
+        if (all_dead) {
+            ch->lost = true;
+            ch->port->mark_lost();
+            spdlog::warn("input '{}' lost: its producer was declared dead", ch->port->topic());
+        }
+    }
+}
+
+void Inputs::revive(std::uint32_t i, const std::string& name, std::uint64_t from_step) {
+    for (auto& ch : channels_) {
+        if (!ch->lost || std::find(ch->producers.begin(), ch->producers.end(), i) == ch->producers.end()) continue;
+        ch->lost = false;
+        ch->revived = true;
+        ch->lost_until = from_step;
+        ch->full.fill(false);
+        spdlog::info("input '{}': its producer '{}' rejoins at step {}", ch->port->topic(), name, from_step);
+    }
+}
+
+void Inputs::extend_faults(const faults::FaultSchedule& schedule, std::size_t first,
+                           const std::vector<msg::MemberInfo>& table, const RunInfo& ri) {
+    for (auto& ch : channels_) {
+        if (ch->producers.empty()) continue;
+        if (ch->faults)
+            ch->faults->extend(first);
+        else
+            ch->faults = input_faults(*ch, schedule, table, ri);
+    }
+}
+
+void Inputs::report_lateness(const std::vector<Local>& locals, const std::string& out_dir) const {
+    if (free_running_) return;  // a free-running member's own inputs are not a deadline
+    for (const auto& l : locals) {
+        std::vector<std::pair<std::string, const Lateness*>> inputs;
+        for (const Channel* ch : l.inputs)
+            if (ch->free) inputs.emplace_back(ch->port->topic(), &ch->lateness);
+        runtime::report_lateness(l.comp->name(), inputs, out_dir);
+    }
+}
+
+}  // namespace gdnav::runtime::host

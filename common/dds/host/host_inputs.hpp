@@ -1,0 +1,61 @@
+#pragma once
+// The DDS host's inputs: the inbox of every input port of its members (host_inbox.hpp), filled from DDS by step,
+// bound to the ports when a step runs; inputs whose producers are all dead are lost, and found again when a
+// producer rejoins; faults scheduled on an input pass through it; free-running inputs keep their lateness.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dds/host/host_inbox.hpp"
+#include "framework/faults/fault_schedule.hpp"
+#include "msgs/messages.hpp"
+
+namespace gdnav::runtime::host {
+
+class Inputs {
+public:
+    // free_running: the host's own members run free (their inputs use the latest samples and are not a deadline).
+    explicit Inputs(bool free_running) : free_running_(free_running) {}
+    ~Inputs();
+    Inputs(const Inputs&) = delete;
+    Inputs& operator=(const Inputs&) = delete;
+
+    // The inbox of input port `in`, its samples allocated; its reader is set by the caller.
+    Channel* add(InputBase* in);
+    // Every reader made so far.
+    [[nodiscard]] std::vector<eprosima::fastdds::dds::DataReader*> readers() const;
+
+    // From the clock's member table: the producers of each of member l's inputs, and the scheduled faults on them
+    // (`schedule`, none when empty); an input nobody produces is lost.
+    void configure(const Local& l, const std::vector<msg::MemberInfo>& table, const faults::FaultSchedule& schedule,
+                   const RunInfo& ri);
+    // Whether every input's reader is matched with all its producers.
+    [[nodiscard]] bool matched() const;
+
+    // The samples that arrived for member l's input `ch` (of run `run`), into its inbox by step.
+    void read(Local& l, Channel& ch, std::uint64_t run);
+    // Binds member l's inputs for step k. False when a sample it waits for is not here yet.
+    bool ready(const Local& l, std::uint64_t k) const;
+    // Free inputs of a step about to run: how many steps old the sample used is (once per executed step).
+    void record_lateness(const Local& l, std::uint64_t k) const;
+    // A sample of step s beyond member l's inbox: dropped, with a warning.
+    static void warn_too_far(const Local& l, const Channel& ch, std::uint64_t s);
+
+    // The clock declared producers dead (bit = table index): inputs whose producers are all dead are lost.
+    void apply_dead_mask(std::uint64_t dead_mask);
+    // Producer `i` (named `name`) rejoined at step from_step: its lost inputs wait for its samples from then on.
+    void revive(std::uint32_t i, const std::string& name, std::uint64_t from_step);
+    // A longer fault schedule (faults from index `first` are new): inputs take on the new faults.
+    void extend_faults(const faults::FaultSchedule& schedule, std::size_t first,
+                       const std::vector<msg::MemberInfo>& table, const RunInfo& ri);
+
+    // Free-running inputs (hardware-in-the-loop): summary lines and <out>/lateness/<member>.yaml.
+    void report_lateness(const std::vector<Local>& locals, const std::string& out_dir) const;
+
+private:
+    bool free_running_{false};
+    std::vector<std::unique_ptr<Channel>> channels_;
+};
+
+}  // namespace gdnav::runtime::host
