@@ -1,18 +1,15 @@
-// gdnav pki init: the DDS Security directory of a run (common/dds/security, docs/deployment.md "Security").
-// Identities: the clock (Tick, RunControl, ComponentStatus), `operator` (FaultRequest, for gdnav fault), every
-// configured member of the scenario (its output topics, StepDone, ComponentStatus), `composed` (every member's
-// outputs: the process of the composed layout), `recorder` (added by gdnav run --record) and any --member NAME=TOPIC,... (an external member).
+// gdnav pki init: the DDS Security directory of a run (common/dds/security, docs/deployment.md "Security"), with the
+// identities of launch/pki/pki_identities.hpp.
 #include "commands.hpp"
 
 #include <memory>
-#include <set>
 
 #include <spdlog/spdlog.h>
 
 #include "commands_scenario.hpp"
-#include "msgs/messages.hpp"
 #include "framework/run_config.hpp"
 #include "launch/pki/pki.hpp"
+#include "launch/pki/pki_identities.hpp"
 #include "dds/security/security.hpp"
 
 namespace gdnav::app {
@@ -28,57 +25,6 @@ struct PkiArgs {
     std::vector<std::string> members;  // NAME=TOPIC[,TOPIC...]
     int days{365};
 };
-
-std::vector<std::string> member_publish(std::vector<std::string> outputs) {
-    outputs.push_back(topics::kStepDone);
-    outputs.push_back(topics::kStatus);
-    return outputs;
-}
-
-std::vector<sec::Identity> identities_for(const PkiArgs& a, const runtime::ComponentRegistry& reg) {
-    const ScenarioDocument s = load_scenario_document(a.scenario, a.o);
-    const runtime::RunConfig rc = runtime::RunConfig::parse(document_text(s.doc), s.file.string());
-    std::vector<sec::Identity> ids{
-        {sec::kClockIdentity, {topics::kTick, topics::kRunControl, topics::kStatus}},
-        {sec::kOperatorIdentity, {topics::kFaultRequest}},
-    };
-    std::set<std::string> all_outputs;
-    for (const auto& c : rc.build(reg)) {
-        std::vector<std::string> outs;
-        for (const auto* o : c->outputs()) {
-            outs.push_back(o->topic());
-            all_outputs.insert(o->topic());
-        }
-        ids.push_back({c->name(), member_publish(outs)});
-    }
-    std::set<std::string> names;
-    for (const auto& id : ids) names.insert(id.name);
-    // `gdnav run --record` adds a member `recorder` (no outputs) to any scenario.
-    if (!names.count("recorder")) ids.push_back({"recorder", member_publish({})});
-    ids.push_back({sec::kComposedIdentity, member_publish({all_outputs.begin(), all_outputs.end()})});
-    names.insert("recorder");
-    names.insert(sec::kComposedIdentity);
-    for (const auto& m : a.members) {
-        const auto eq = m.find('=');
-        const std::string name = m.substr(0, eq);
-        if (eq == std::string::npos || name.empty() || eq + 1 >= m.size())
-            throw config::ConfigError("config error: --member '" + m +
-                                      "': expected NAME=TOPIC[,TOPIC...] (the topics the member publishes)");
-        if (!names.insert(name).second)
-            throw config::ConfigError("config error: --member '" + name + "': identity already made for the scenario");
-        std::vector<std::string> topics_of;
-        std::string rest = m.substr(eq + 1);
-        for (std::size_t p = 0; p <= rest.size();) {
-            const auto c = rest.find(',', p);
-            const std::string t = rest.substr(p, c == std::string::npos ? std::string::npos : c - p);
-            if (!t.empty()) topics_of.push_back(t);
-            if (c == std::string::npos) break;
-            p = c + 1;
-        }
-        ids.push_back({name, member_publish(topics_of)});
-    }
-    return ids;
-}
 
 }  // namespace
 
@@ -97,7 +43,9 @@ CLI::App* add_pki_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
     init->add_option("--days", a->days, "validity of certificates and grants in days")->check(CLI::Range(1, 36500));
     run = [a, &ctx]() {
         setup_logging("gdnav", ctx.log_level);
-        const auto ids = identities_for(*a, ctx.registry);
+        const ScenarioDocument s = load_scenario_document(a->scenario, a->o);
+        const runtime::RunConfig rc = runtime::RunConfig::parse(document_text(s.doc), s.file.string());
+        const auto ids = sec::run_identities(rc, ctx.registry, a->members);
         spdlog::info("gdnav pki: making a CA and {} identities in {} (openssl)", ids.size(), a->dir);
         sec::PkiOptions po;
         po.days = a->days;

@@ -1,18 +1,13 @@
 // gdnav host --plan PLAN --name H, and gdnav run --plan PLAN (the clock's host): one host's slice of a deployment
-// plan (launch/plan/plan.hpp, docs/deployment.md "Plans"). Every host resolves the same run from the plan (same
-// scenario, seed, domain and overrides), writes the plan's Fast DDS XML (discovery from the plan, no hand-edited
-// addresses) into its output directory, starts the discovery server(s) the plan puts on it, and starts and
-// supervises its own members (exit codes, clean-up, Ctrl-C) through the launcher.
+// plan (launch/plan/plan_host.hpp).
 #include "commands_plan.hpp"
 
-#include <fstream>
 #include <memory>
 
 #include <spdlog/spdlog.h>
-#include <yaml-cpp/yaml.h>
 
-#include "launch/plan/plan.hpp"
 #include "launch/launcher.hpp"
+#include "launch/plan/plan_host.hpp"
 #include "scenario_overrides.hpp"
 
 namespace gdnav::app {
@@ -33,61 +28,15 @@ fs::path plan_scenario_file(const deploy::Plan& plan) {
 
 int run_plan_host(const PlanHostArgs& a, const CliContext& ctx) {
     const deploy::Plan plan = deploy::Plan::load(a.plan);
-    const deploy::PlanHost& host = a.host.empty() ? plan.clock_host() : plan.host(a.host);
-    const fs::path out = a.out.empty() ? fs::path("out/plan") / host.name : fs::path(a.out);
-    fs::create_directories(out);
-    const fs::path xml = fs::absolute(out / "dds_plan.xml");
-    std::ofstream(xml) << deploy::plan_profile_xml(plan);
-
-    // The run: the scenario with the plan's run keys, domain and profile (same on every host).
-    const fs::path scenario_file = plan_scenario_file(plan);
-    YAML::Node doc = YAML::LoadFile(scenario_file.string());
-    if (plan.run_overrides)
-        for (const auto& kv : plan.run_overrides) doc["run"][kv.first.as<std::string>()] = YAML::Clone(kv.second);
-    doc["run"]["dds_profile"] = xml.string();
-    RunOverrides o;
-    o.domain_id = plan.domain_id;
-    o.out_dir = out.string();
-    if (plan.seed) o.seed = *plan.seed;
-    if (a.steps > 0) o.steps = a.steps;
-    YAML::Emitter em;
-    em.SetDoublePrecision(17);
-    em << doc;
-    RunConfig rc = RunConfig::parse(em.c_str(), scenario_file.string(), o);
-    if (!a.rw.empty()) rc = apply_run_rewrites(rc, a.rw, ctx.registry);
-    std::vector<std::string> names;
-    for (const auto& m : rc.members) names.push_back(m.name);
-    plan.check_members(names, rc.external);
-
-    LaunchOptions lo;
-    lo.layout = host.process;
-    lo.log_level = ctx.log_level;
-    lo.slice = true;
-    lo.start_clock = host.clock;
-    for (const auto& m : host.members)
-        if (std::find(names.begin(), names.end(), m) != names.end()) lo.only.push_back(m);
-    int id = 0;
-    for (const std::string* s : {&plan.server_host, &plan.backup_host}) {
-        if (!s->empty() && *s == host.name)
-            lo.services.push_back({"discovery server " + std::to_string(id),
-                                   {"/usr/bin/fast-discovery-server", "-i", std::to_string(id), "-l", host.address,
-                                    "-p", std::to_string(plan.server_port + id)}});
-        ++id;
-    }
-    std::string elsewhere;
-    for (const auto& h : plan.hosts)
-        if (h.name != host.name) {
-            std::string ms;
-            for (const auto& m : h.members) ms += (ms.empty() ? "" : ",") + m;
-            elsewhere += (elsewhere.empty() ? "" : "; ") + h.name + " (" + h.address + "): " +
-                         (h.clock ? std::string("clock") + (ms.empty() ? "" : ",") : std::string()) + ms;
-        }
-    std::string mine;
-    for (const auto& m : lo.only) mine += (mine.empty() ? "" : ",") + m;
-    spdlog::info("plan {}: host {} ({}) runs {}{} as {}, discovery {}, DDS domain {}; other hosts: {}",
-                 plan.file.string(), host.name, host.address, host.clock ? "the clock, " : "", mine, host.process,
-                 plan.discovery, plan.domain_id, elsewhere.empty() ? "none" : elsewhere);
-    return launch_run(std::move(rc), ctx.registry, lo);
+    deploy::PlanHostRequest req;
+    req.host = a.host;
+    req.out = a.out;
+    req.steps = a.steps;
+    req.rw = a.rw;
+    req.log_level = ctx.log_level;
+    deploy::PlanHostRun r = deploy::plan_host_run(plan, req, plan_scenario_file(plan), ctx.registry);
+    spdlog::info("{}", r.summary);
+    return launch_run(std::move(r.rc), ctx.registry, r.lo);
 }
 
 CLI::App* add_host_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {

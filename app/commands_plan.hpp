@@ -1,5 +1,6 @@
 #pragma once
-// One host's slice of a deployment plan: `gdnav host --plan P --name H` and `gdnav run --plan P` (the clock's host).
+// The options of `gdnav host --plan P --name H` and `gdnav run --plan P` (the clock's host): one host's slice of a
+// deployment plan (launch/plan/plan_host.hpp).
 #include <cstdint>
 #include <string>
 

@@ -5,9 +5,9 @@
 
 #include <spdlog/spdlog.h>
 
-#include "bench.hpp"
 #include "commands_plan.hpp"
 #include "commands_scenario.hpp"
+#include "launch/bench/bench.hpp"
 #include "launch/run_rewrites.hpp"
 #include "dds/clock/clock.hpp"
 #include "dds/host/dds_host.hpp"
@@ -21,26 +21,27 @@ namespace gdnav::app {
 
 using namespace gdnav::runtime;
 
-CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
-    struct Args {
-        std::string scenario{"default"};
-        std::uint64_t seed{1};
-        std::uint64_t run_index{0};
-        std::string layout{"distributed"};
-        std::string out;
-        double realtime{0.0};
-        std::uint64_t steps{0};
-        int domain{-1};
-        std::vector<std::string> external;
-        double join_timeout_s{0.0};
-        std::string faults_file;
-        std::string security;
-        std::string plan;
-        RunRewrites rw;
-        scenario::Overrides o;
-    };
-    auto a = std::make_shared<Args>();
-    auto* sub = app.add_subcommand("run", "run one simulation in a layout, supervising all its processes");
+namespace {
+
+struct RunArgs {
+    std::string scenario{"default"};
+    std::uint64_t seed{1};
+    std::uint64_t run_index{0};
+    std::string layout{"distributed"};
+    std::string out;
+    double realtime{0.0};
+    std::uint64_t steps{0};
+    int domain{-1};
+    std::vector<std::string> external;
+    double join_timeout_s{0.0};
+    std::string faults_file;
+    std::string security;
+    std::string plan;
+    RunRewrites rw;
+    scenario::Overrides o;
+};
+
+void add_run_options(CLI::App* sub, RunArgs* a) {
     sub->add_option("--scenario", a->scenario, "scenario name (config/scenarios/<name>.yaml) or YAML file");
     sub->add_option("--seed", a->seed, "master seed");
     sub->add_option("--run", a->run_index, "run index inside a batch");
@@ -79,48 +80,66 @@ CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
         ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
     sub->add_option("--live-topics", a->rw.live_topics, "topics of the live view (TOPIC[,TOPIC...], `viewer` for the viewer channels; default: all,viewer)")
         ->delimiter(',');
+}
+
+// gdnav run --plan: the clock host's slice of the plan; the plan names what the other options would.
+int run_with_plan(const RunArgs& a, const CLI::App& sub, const CliContext& ctx) {
+    for (const char* opt : {"--scenario", "--seed", "--run", "--layout", "--domain", "--replay", "--external",
+                            "--security", "--set", "--grade", "--variant", "--faults", "--realtime"})
+        if (sub.count(opt))
+            throw config::ConfigError(std::string("config error: --plan and ") + opt +
+                                      ": the plan names the scenario, seed, domain and layout of each host");
+    for (const char* opt : {"--live", "--live-bind", "--live-decimation", "--live-topics"})
+        if (sub.count(opt))
+            throw config::ConfigError(std::string("config error: --plan and ") + opt +
+                                      ": give the plan's scenario a `live` member instead (docs/viewing.md)");
+    PlanHostArgs pa;
+    pa.plan = a.plan;
+    pa.out = a.out;
+    pa.steps = a.steps;
+    pa.rw.record = a.rw.record;
+    return run_plan_host(pa, ctx);
+}
+
+// The run configuration of the command line: the scenario (or, with --replay and no --scenario, the replayed run's)
+// with the overrides.
+RunConfig run_config_of(const RunArgs& a, const CLI::App& sub) {
+    RunOverrides o;
+    if (sub.count("--seed")) o.seed = a.seed;
+    if (sub.count("--run")) o.run_index = a.run_index;
+    if (!a.out.empty()) o.out_dir = a.out;
+    if (sub.count("--realtime")) o.realtime = a.realtime;
+    if (a.steps > 0) o.steps = a.steps;
+    if (a.domain >= 0) o.domain_id = a.domain;
+    if (!a.external.empty()) o.external = a.external;
+    if (sub.count("--join-timeout")) o.join_timeout_s = a.join_timeout_s;
+    if (!a.faults_file.empty()) o.faults_file = a.faults_file;
+    if (!a.security.empty()) o.security = a.security;
+    // With --replay and no --scenario, the replayed run's own configuration is the base.
+    const bool replay_base = !a.rw.replay_dir.empty() && !sub.count("--scenario");
+    RunConfig rc = [&] {
+        if (replay_base) {
+            if (!a.o.empty()) throw config::ConfigError("config error: --set/--grade/--variant need --scenario with --replay");
+            return RunConfig::load(std::filesystem::path(a.rw.replay_dir) / "run.yaml", o);
+        }
+        if (a.o.empty()) return RunConfig::load(resolve_scenario(scenario::scenario_alias(a.scenario)), o);
+        // Overrides apply to the scenario document before its generator runs (as in gdnav scenario/montecarlo).
+        const ScenarioDocument s = load_scenario_document(a.scenario, a.o);
+        return RunConfig::parse(document_text(s.doc), s.file.string(), o);
+    }();
+    return rc;
+}
+
+}  // namespace
+
+CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
+    auto a = std::make_shared<RunArgs>();
+    auto* sub = app.add_subcommand("run", "run one simulation in a layout, supervising all its processes");
+    add_run_options(sub, a.get());
     run = [a, sub, &ctx]() {
         setup_logging("gdnav", ctx.log_level);
-        if (!a->plan.empty()) {
-            for (const char* opt : {"--scenario", "--seed", "--run", "--layout", "--domain", "--replay", "--external",
-                                    "--security", "--set", "--grade", "--variant", "--faults", "--realtime"})
-                if (sub->count(opt))
-                    throw config::ConfigError(std::string("config error: --plan and ") + opt +
-                                              ": the plan names the scenario, seed, domain and layout of each host");
-            for (const char* opt : {"--live", "--live-bind", "--live-decimation", "--live-topics"})
-                if (sub->count(opt))
-                    throw config::ConfigError(std::string("config error: --plan and ") + opt +
-                                              ": give the plan's scenario a `live` member instead (docs/viewing.md)");
-            PlanHostArgs pa;
-            pa.plan = a->plan;
-            pa.out = a->out;
-            pa.steps = a->steps;
-            pa.rw.record = a->rw.record;
-            return run_plan_host(pa, ctx);
-        }
-        RunOverrides o;
-        if (sub->count("--seed")) o.seed = a->seed;
-        if (sub->count("--run")) o.run_index = a->run_index;
-        if (!a->out.empty()) o.out_dir = a->out;
-        if (sub->count("--realtime")) o.realtime = a->realtime;
-        if (a->steps > 0) o.steps = a->steps;
-        if (a->domain >= 0) o.domain_id = a->domain;
-        if (!a->external.empty()) o.external = a->external;
-        if (sub->count("--join-timeout")) o.join_timeout_s = a->join_timeout_s;
-        if (!a->faults_file.empty()) o.faults_file = a->faults_file;
-        if (!a->security.empty()) o.security = a->security;
-        // With --replay and no --scenario, the replayed run's own configuration is the base.
-        const bool replay_base = !a->rw.replay_dir.empty() && !sub->count("--scenario");
-        RunConfig rc = [&] {
-            if (replay_base) {
-                if (!a->o.empty()) throw config::ConfigError("config error: --set/--grade/--variant need --scenario with --replay");
-                return RunConfig::load(std::filesystem::path(a->rw.replay_dir) / "run.yaml", o);
-            }
-            if (a->o.empty()) return RunConfig::load(resolve_scenario(scenario::scenario_alias(a->scenario)), o);
-            // Overrides apply to the scenario document before its generator runs (as in gdnav scenario/montecarlo).
-            const ScenarioDocument s = load_scenario_document(a->scenario, a->o);
-            return RunConfig::parse(document_text(s.doc), s.file.string(), o);
-        }();
+        if (!a->plan.empty()) return run_with_plan(*a, *sub, ctx);
+        RunConfig rc = run_config_of(*a, *sub);
         a->rw.live = sub->count("--live") > 0;
         if (!a->rw.empty()) rc = apply_run_rewrites(rc, a->rw, ctx.registry);
         LaunchOptions lo;
@@ -216,7 +235,7 @@ CLI::App* add_list_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
 }
 
 CLI::App* add_bench_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
-    auto a = std::make_shared<BenchArgs>();
+    auto a = std::make_shared<BenchOptions>();
     auto* sub = app.add_subcommand("bench", "measure steps/s and real-time factor per layout, and model costs");
     sub->add_option("--scenario", a->scenario, "scenario name or YAML file");
     sub->add_option("--steps", a->steps, "steps per measurement");
@@ -229,7 +248,11 @@ CLI::App* add_bench_command(CLI::App& app, CliContext& ctx, CommandRunner& run) 
                     "DDS Security directory (gdnav pki init): also measure the composed layout with security on");
     run = [a, &ctx]() {
         setup_logging("gdnav", ctx.log_level);
-        return run_bench(*a, ctx);
+        a->log_level = ctx.log_level;
+        const BenchFigures fig = measure_bench(*a, ctx.registry);
+        std::fputs(bench_tables(fig, *a).c_str(), stdout);
+        if (!a->json.empty()) write_bench_json(fig, a->json);
+        return 0;
     };
     return sub;
 }

@@ -1,12 +1,11 @@
 #pragma once
-// gdnav montecarlo, shared by the command (commands_montecarlo.cpp), the MPI launcher (montecarlo_mpi.cpp) and the
-// benchmark (bench.cpp): a batch, or one shard of it, run as parallel `gdnav run` child processes into a batch
-// directory (batch_dir.hpp).
+// gdnav montecarlo's options, shared by the command (commands_montecarlo.cpp), the MPI launcher (montecarlo_mpi.cpp)
+// and the benchmark (bench.cpp); the batch itself is run by launch/batch/batch_runner.hpp.
 #include <cstdint>
 #include <filesystem>
 #include <string>
 
-#include "launch/batch/batch_dir.hpp"
+#include "launch/batch/batch_runner.hpp"
 #include "command.hpp"
 #include "scenario_overrides.hpp"
 
@@ -29,9 +28,9 @@ struct McArgs {
     bool mpi{false};
 };
 
-// Runs shard `s` of the batch (Shard{} = every run) into a.out and returns 0 when each of its runs is complete,
-// 1 when some failed, 130 when interrupted; configuration errors throw config::ConfigError before anything runs.
-// No report (see write_batch_report).
+// The batch of these options: the scenario document with the overrides applied, and this process's log level.
+BatchSpec batch_spec(const McArgs& a, const CliContext& ctx);
+// run_batch_shard (batch_runner.hpp) of these options. No report (see write_batch_report).
 int run_batch_shard(const McArgs& a, const CliContext& ctx, const Shard& s);
 
 // The whole command: the batch or its --shard, then (whole batch only, unless --no-report) the report.

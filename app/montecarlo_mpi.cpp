@@ -11,7 +11,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include "commands_report.hpp"
+#include "launch/batch/batch_report.hpp"
 #include "config/config.hpp"
 #include "metrics/run_record.hpp"
 #include "montecarlo.hpp"

@@ -153,80 +153,87 @@ int run_direct(const RunConfig& rc, const ComponentRegistry& reg, bool progress,
     return kExitOk;
 }
 
-int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& opt) {
+namespace {
+
+// Options that cannot work together, before anything else.
+void check_layout(const RunConfig& rc, const LaunchOptions& opt) {
     if (opt.layout != "direct" && opt.layout != "composed" && opt.layout != "distributed")
         throw config::ConfigError("unknown layout '" + opt.layout + "' (allowed: direct, composed, distributed)");
     if (opt.layout == "direct" && !rc.external.empty())
         throw config::ConfigError("config error: " + rc.origin +
                                   ": key 'run.external': external members need the lockstep clock; use --layout "
                                   "composed or distributed (the direct layout has no transport)");
-    if (!rc.domain_given) {
-        rc.domain_id = static_cast<int>(getpid() % 200) + 20;
-        RunOverrides o;
-        o.domain_id = rc.domain_id;
-        const std::string faults_origin = rc.faults_origin;  // errors keep naming the file the faults came from
-        rc = RunConfig::parse(rc.to_yaml(), rc.origin, o);
-        rc.faults_origin = faults_origin;
-    }
-    // Validate everything before anything starts: build (construct + configure) every component.
-    (void)rc.build(reg);
+}
+
+// A run without a given domain gets one derived from this process's id.
+void choose_domain(RunConfig& rc) {
+    if (rc.domain_given) return;
+    rc.domain_id = static_cast<int>(getpid() % 200) + 20;
+    RunOverrides o;
+    o.domain_id = rc.domain_id;
+    const std::string faults_origin = rc.faults_origin;  // errors keep naming the file the faults came from
+    rc = RunConfig::parse(rc.to_yaml(), rc.origin, o);
+    rc.faults_origin = faults_origin;
+}
+
+fs::path write_run_yaml(const RunConfig& rc, const LaunchOptions& opt) {
     fs::create_directories(rc.out_dir);
     const fs::path run_yaml = fs::path(rc.out_dir) / "run.yaml";
-    {
-        std::ofstream f(run_yaml);
-        f << "# Resolved run configuration written by gdnav run (layout " << opt.layout << ")\n" << rc.to_yaml();
-    }
-    spdlog::info("run {} seed {} layout {}: {} steps of {} s -> {}", rc.info.run_index, rc.info.seed, opt.layout,
-                 rc.info.steps, rc.info.dt_s, rc.out_dir);
-    if (opt.layout == "direct") {
-        if (!rc.security_dir.empty())
-            spdlog::warn("run.security is ignored in the direct layout (one process, no DDS)");
-        return run_direct(rc, reg, true);
-    }
+    std::ofstream f(run_yaml);
+    f << "# Resolved run configuration written by gdnav run (layout " << opt.layout << ")\n" << rc.to_yaml();
+    return run_yaml;
+}
+
+// Every identity this run starts must be valid before any process starts (one clear error otherwise).
+void check_security(const RunConfig& rc, const LaunchOptions& opt) {
     if (!rc.security_dir.empty() && opt.layout == "distributed")
         throw config::ConfigError(
             "config error: " + rc.origin + ": key 'run.security': not with --layout distributed: Fast DDS 2.9.1 "
             "(Debian 12) leaves some secure endpoints unmatched when more than about 3 participants start together "
             "(measured in docs/deployment.md); use --layout composed (the clock and one process)");
-    if (!rc.security_dir.empty()) {
-        // Every identity this run starts must be valid before any process starts (one clear error otherwise).
-        std::vector<std::string> identities{security::kClockIdentity};
-        std::vector<std::string> hosted;
-        for (const auto& m : rc.members)
-            if (!rc.is_external(m.name)) {
-                if (opt.layout == "distributed") identities.push_back(m.name);
-                hosted.push_back(m.name);
-            }
-        if (opt.layout == "composed" && !hosted.empty()) identities.push_back(security::process_identity(hosted));
-        for (const auto& id : identities) security::check_identity(rc.security_dir, id);
-        spdlog::info("DDS Security on: {} identities from {} checked (authentication, access control, AES-GCM)",
-                     identities.size(), rc.security_dir.string());
-    }
+    if (rc.security_dir.empty()) return;
+    std::vector<std::string> identities{security::kClockIdentity};
+    std::vector<std::string> hosted;
+    for (const auto& m : rc.members)
+        if (!rc.is_external(m.name)) {
+            if (opt.layout == "distributed") identities.push_back(m.name);
+            hosted.push_back(m.name);
+        }
+    if (opt.layout == "composed" && !hosted.empty()) identities.push_back(security::process_identity(hosted));
+    for (const auto& id : identities) security::check_identity(rc.security_dir, id);
+    spdlog::info("DDS Security on: {} identities from {} checked (authentication, access control, AES-GCM)",
+                 identities.size(), rc.security_dir.string());
+}
 
+std::string join(const std::vector<std::string>& v, const char* sep) {
+    std::string s;
+    for (const auto& x : v) s += (s.empty() ? "" : sep) + x;
+    return s;
+}
+
+std::vector<Child> start_services(const LaunchOptions& opt) {
+    std::vector<Child> services;
+    for (const auto& [name, argv] : opt.services) {
+        std::vector<std::string> rest(argv.begin() + 1, argv.end());
+        services.push_back({name, spawn(argv.front(), rest)});
+        spdlog::info("started {} (pid {}): {}", name, services.back().pid, join(argv, " "));
+    }
+    return services;
+}
+
+// The clock (when this process starts it) and the members: all (not external), or this host's slice of a plan.
+std::vector<Child> start_members(const RunConfig& rc, const LaunchOptions& opt, const fs::path& run_yaml) {
     const fs::path exe = opt.exe.empty() ? fs::read_symlink("/proc/self/exe") : opt.exe;
-    const std::time_t started = std::time(nullptr) - 1;
-    std::vector<Child> children;
     const std::vector<std::string> common{"--config", run_yaml.string(), "--log-level", opt.log_level};
     auto args = [&](std::vector<std::string> a) {
         a.insert(a.end(), common.begin(), common.end());
         return a;
     };
-    install_stop_signal_handlers();
-    std::vector<Child> services;
-    for (const auto& [name, argv] : opt.services) {
-        std::vector<std::string> rest(argv.begin() + 1, argv.end());
-        services.push_back({name, spawn(argv.front(), rest)});
-        spdlog::info("started {} (pid {}): {}", name, services.back().pid, [&] {
-            std::string c;
-            for (const auto& a : argv) c += (c.empty() ? "" : " ") + a;
-            return c;
-        }());
-    }
-    // The members this process starts: all (not external), or this host's slice of a plan.
     auto here = [&](const std::string& name) {
         if (rc.is_external(name)) return false;
         return !opt.slice || std::find(opt.only.begin(), opt.only.end(), name) != opt.only.end();
     };
+    std::vector<Child> children;
     if (opt.start_clock) children.push_back({kClockName, spawn(exe, args({"clock"}))});
     if (opt.layout == "distributed") {
         for (const auto& m : rc.members)
@@ -237,39 +244,36 @@ int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& 
             if (here(m.name)) all += (all.empty() ? "" : ",") + m.name;
         if (!all.empty()) children.push_back({"composed", spawn(exe, args({"component", all}))});
     }
-    if (!rc.external.empty()) {
-        std::string names;
-        for (const auto& n : rc.external) names += (names.empty() ? "" : ", ") + n;
-        spdlog::info("external member(s) {} are not started by gdnav: start them on DDS domain {} with run id {} "
-                     "(e.g. `--domain {} --run {}`); waiting up to {:.0f} s",
-                     names, rc.domain_id, rc.info.run_index, rc.domain_id, rc.info.run_index, rc.join_timeout_s);
-    }
-    {
-        std::ofstream f(fs::path(rc.out_dir) / "processes.yaml");
-        for (const auto& c : children) f << c.name << ": " << c.pid << "\n";
-    }
+    return children;
+}
 
-    int clock_code = -1;
-    std::vector<std::string> failures;
+struct Outcome {
+    int clock_code{-1};
+    std::vector<std::string> failures;  // "name (how it ended)"
+    bool interrupted{false};
+};
+
+// Waits for the children: Ctrl-C stops them all; once the clock is gone the members get member_timeout_s to end.
+Outcome supervise(std::vector<Child>& children, const RunConfig& rc) {
+    Outcome out;
     auto on_exit = [&](Child& c) {
         const bool ok = WIFEXITED(c.status) && WEXITSTATUS(c.status) == 0;
-        if (c.name == kClockName) clock_code = WIFEXITED(c.status) ? WEXITSTATUS(c.status) : 128 + WTERMSIG(c.status);
+        if (c.name == kClockName)
+            out.clock_code = WIFEXITED(c.status) ? WEXITSTATUS(c.status) : 128 + WTERMSIG(c.status);
         if (!ok) {
-            failures.push_back(c.name + " (" + describe(c.status) + ")");
+            out.failures.push_back(c.name + " (" + describe(c.status) + ")");
             spdlog::warn("process '{}' (pid {}) ended: {}", c.name, c.pid, describe(c.status));
         }
     };
-    bool interrupted = false;
     while (any_running(children)) {
         reap(children, on_exit);
-        if (stop_requested() && !interrupted) {
-            interrupted = true;
+        if (stop_requested() && !out.interrupted) {
+            out.interrupted = true;
             spdlog::warn("interrupted: stopping all processes of the run");
             signal_all(children, SIGTERM);
             if (!wait_all(children, 3.0, on_exit)) signal_all(children, SIGKILL);
         }
-        if (clock_code >= 0 && any_running(children)) {
-            // The clock is gone: members exit by themselves within member_timeout_s; then enforce it.
+        if (out.clock_code >= 0 && any_running(children)) {
             if (!wait_all(children, rc.member_timeout_s + 3.0, on_exit)) {
                 spdlog::warn("members still running after the clock ended; terminating them");
                 signal_all(children, SIGTERM);
@@ -279,43 +283,75 @@ int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& 
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     reap(children, on_exit);
-    if (!services.empty()) {
-        signal_all(services, SIGTERM);
-        if (!wait_all(services, 3.0, [](Child&) {})) signal_all(services, SIGKILL);
-        reap(services, [](Child&) {});
-    }
-    const auto removed = clean_fastdds_shm(started);
-    if (!removed.empty()) spdlog::info("removed {} Fast DDS shared-memory files left by the run", removed.size());
-    if (interrupted) {
+    return out;
+}
+
+void stop_services(std::vector<Child>& services) {
+    if (services.empty()) return;
+    signal_all(services, SIGTERM);
+    if (!wait_all(services, 3.0, [](Child&) {})) signal_all(services, SIGKILL);
+    reap(services, [](Child&) {});
+}
+
+// The run's exit code from how its processes ended, with the closing log line.
+int exit_code(const Outcome& out, const RunConfig& rc, const LaunchOptions& opt) {
+    if (out.interrupted) {
         spdlog::error("run interrupted");
         return kExitInterrupted;
     }
     if (!opt.start_clock) {  // a plan host without the clock: its own processes decide
-        if (!failures.empty()) {
-            std::string s;
-            for (const auto& f : failures) s += (s.empty() ? "" : ", ") + f;
-            spdlog::error("host slice failed: {}", s);
+        if (!out.failures.empty()) {
+            spdlog::error("host slice failed: {}", join(out.failures, ", "));
             return 1;
         }
         spdlog::info("host slice completed; results in {}", rc.out_dir);
         return kExitOk;
     }
-    if (clock_code != kExitOk) {
-        spdlog::error("run failed: the clock ended with code {}{}", clock_code,
-                      failures.empty() ? "" : "; failed processes: " + [&] {
-                          std::string s;
-                          for (const auto& f : failures) s += (s.empty() ? "" : ", ") + f;
-                          return s;
-                      }());
-        return clock_code > 0 ? clock_code : 1;
+    if (out.clock_code != kExitOk) {
+        spdlog::error("run failed: the clock ended with code {}{}", out.clock_code,
+                      out.failures.empty() ? "" : "; failed processes: " + join(out.failures, ", "));
+        return out.clock_code > 0 ? out.clock_code : 1;
     }
-    if (!failures.empty()) {
-        std::string s;
-        for (const auto& f : failures) s += (s.empty() ? "" : ", ") + f;
-        spdlog::warn("run completed without: {}", s);
-    }
+    if (!out.failures.empty()) spdlog::warn("run completed without: {}", join(out.failures, ", "));
     spdlog::info("run completed; results in {}", rc.out_dir);
     return kExitOk;
+}
+
+}  // namespace
+
+int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& opt) {
+    check_layout(rc, opt);
+    choose_domain(rc);
+    // Validate everything before anything starts: build (construct + configure) every component.
+    (void)rc.build(reg);
+    const fs::path run_yaml = write_run_yaml(rc, opt);
+    spdlog::info("run {} seed {} layout {}: {} steps of {} s -> {}", rc.info.run_index, rc.info.seed, opt.layout,
+                 rc.info.steps, rc.info.dt_s, rc.out_dir);
+    if (opt.layout == "direct") {
+        if (!rc.security_dir.empty())
+            spdlog::warn("run.security is ignored in the direct layout (one process, no DDS)");
+        return run_direct(rc, reg, true);
+    }
+    check_security(rc, opt);
+
+    const std::time_t started = std::time(nullptr) - 1;
+    install_stop_signal_handlers();
+    std::vector<Child> services = start_services(opt);
+    std::vector<Child> children = start_members(rc, opt, run_yaml);
+    if (!rc.external.empty())
+        spdlog::info("external member(s) {} are not started by gdnav: start them on DDS domain {} with run id {} "
+                     "(e.g. `--domain {} --run {}`); waiting up to {:.0f} s",
+                     join(rc.external, ", "), rc.domain_id, rc.info.run_index, rc.domain_id, rc.info.run_index,
+                     rc.join_timeout_s);
+    {
+        std::ofstream f(fs::path(rc.out_dir) / "processes.yaml");
+        for (const auto& c : children) f << c.name << ": " << c.pid << "\n";
+    }
+    const Outcome out = supervise(children, rc);
+    stop_services(services);
+    const auto removed = clean_fastdds_shm(started);
+    if (!removed.empty()) spdlog::info("removed {} Fast DDS shared-memory files left by the run", removed.size());
+    return exit_code(out, rc, opt);
 }
 
 }  // namespace gdnav::runtime

@@ -52,26 +52,96 @@ std::uint64_t decimation(const std::string& group, double rate_hz, double dt_s) 
     return static_cast<std::uint64_t>(d);
 }
 
-}  // namespace
-
-void export_log(const ExportOptions& o) {
+void check_rates(const ExportOptions& o) {
     for (const auto& [name, rate] : o.rates_hz) {
         bool known = false;
         for (const auto& g : log_groups()) known = known || g.name == name;
         if (!known) fail("--rates", "unknown sensor group '" + name + "' (known: imu, mag, air, atm, gnss)");
         if (!(rate > 0.0) || !std::isfinite(rate)) fail("--rates", name + ": the rate must be positive (Hz)");
     }
-    const fs::path record_dir = o.run_dir / "record";
+}
+
+// Every channel of <run_dir>/record: a foreign one is refused.
+recorder::Recording read_record(const fs::path& record_dir, const ExportOptions& o) {
     std::error_code ec;
     if (!fs::is_directory(record_dir, ec)) fail(o.run_dir.string(), "no record/ directory (record the run with --record)");
-    recorder::Recording recording;
     try {
-        recording = recorder::read_recording(record_dir);  // every channel: a foreign one is refused
+        return recorder::read_recording(record_dir);
     } catch (const std::runtime_error& e) {
         fail("export-log", e.what());
     }
-    fs::create_directories(o.csv_dir);
+}
 
+// Writes <csv_dir>/<group>.csv from the group's record at its rate; returns its alignment values (imu, mag: those of
+// the first sample; other groups: none).
+std::vector<double> export_group(const LogGroup& g, RecordSamples& rec, const recorder::Recording& recording,
+                                 const ExportOptions& o) {
+    if (rec.size() == 0) fail(recording.file.string() + ": " + g.topic, "no samples");
+    // The grid step from the stamps of the first and last samples.
+    const double t_first = g.t_s(rec.load(0));
+    double dt_s = 0.01;
+    if (rec.size() > 1) {
+        const double t_last = g.t_s(rec.load(rec.size() - 1));
+        dt_s = (t_last - t_first) / static_cast<double>(rec.step(rec.size() - 1) - rec.step(0));
+    }
+    const auto it = o.rates_hz.find(g.name);
+    const std::uint64_t every = it == o.rates_hz.end() ? 1 : decimation(g.name, it->second, dt_s);
+
+    std::vector<std::string> columns{kTimeColumn};
+    for (const auto& f : g.fields) columns.push_back(f.name);
+    CsvWriter csv(o.csv_dir / (g.name + ".csv"), columns);
+    std::vector<double> row(columns.size());
+    std::uint64_t rows = 0;
+    for (std::size_t i = 0; i < rec.size(); ++i) {
+        if (rec.step(i) % every != 0) continue;
+        void* s = rec.load(i);
+        if (g.fix_valid && !g.fix_valid(s)) continue;
+        row[0] = g.t_s(s);
+        for (std::size_t c = 0; c < g.fields.size(); ++c) row[c + 1] = g.fields[c].ref(s);
+        csv.row(row);
+        ++rows;
+    }
+    try {
+        csv.close();
+    } catch (const std::runtime_error& e) {
+        fail("export-log", e.what());
+    }
+    spdlog::info("export-log: {} -> {}.csv: {} rows (every {} steps{})", g.topic, g.name, rows, every,
+                 g.fixes ? ", valid fixes only" : "");
+    const AlignmentLayout& al = alignment_layout();
+    std::vector<double> align;
+    if (g.name == "imu")
+        for (const auto& f : al.imu) align.push_back(f.ref(rec.load(0)));
+    if (g.name == "mag")
+        for (const auto& f : al.mag) align.push_back(f.ref(rec.load(0)));
+    return align;
+}
+
+void write_alignment(const std::vector<double>& imu_align, const std::vector<double>& mag_align,
+                     const ExportOptions& o) {
+    if (imu_align.empty() || mag_align.empty()) {
+        spdlog::info("export-log: no {} (needs records of both ImuSample and MagSample)", kAlignmentFile);
+        return;
+    }
+    const AlignmentLayout& al = alignment_layout();
+    std::vector<std::string> columns;
+    for (const auto& f : al.imu) columns.push_back(f.name);
+    for (const auto& f : al.mag) columns.push_back(f.name);
+    std::vector<double> row = imu_align;
+    row.insert(row.end(), mag_align.begin(), mag_align.end());
+    CsvWriter csv(o.csv_dir / kAlignmentFile, columns);
+    csv.row(row);
+    csv.close();
+    spdlog::info("export-log: alignment of the first ImuSample and MagSample -> {}", kAlignmentFile);
+}
+
+}  // namespace
+
+void export_log(const ExportOptions& o) {
+    check_rates(o);
+    const fs::path record_dir = o.run_dir / "record";
+    recorder::Recording recording = read_record(record_dir, o);
+    fs::create_directories(o.csv_dir);
     std::vector<double> imu_align, mag_align;
     int written = 0;
     for (const LogGroup& g : log_groups()) {
@@ -81,60 +151,13 @@ void export_log(const ExportOptions& o) {
             continue;
         }
         auto rec = std::make_unique<RecordSamples>(std::move(found->second));
-        if (rec->size() == 0) fail(recording.file.string() + ": " + g.topic, "no samples");
-        // The grid step from the stamps of the first and last samples.
-        const double t_first = g.t_s(rec->load(0));
-        double dt_s = 0.01;
-        if (rec->size() > 1) {
-            const double t_last = g.t_s(rec->load(rec->size() - 1));
-            dt_s = (t_last - t_first) / static_cast<double>(rec->step(rec->size() - 1) - rec->step(0));
-        }
-        const auto it = o.rates_hz.find(g.name);
-        const std::uint64_t every = it == o.rates_hz.end() ? 1 : decimation(g.name, it->second, dt_s);
-
-        std::vector<std::string> columns{kTimeColumn};
-        for (const auto& f : g.fields) columns.push_back(f.name);
-        CsvWriter csv(o.csv_dir / (g.name + ".csv"), columns);
-        std::vector<double> row(columns.size());
-        std::uint64_t rows = 0;
-        for (std::size_t i = 0; i < rec->size(); ++i) {
-            if (rec->step(i) % every != 0) continue;
-            void* s = rec->load(i);
-            if (g.fix_valid && !g.fix_valid(s)) continue;
-            row[0] = g.t_s(s);
-            for (std::size_t c = 0; c < g.fields.size(); ++c) row[c + 1] = g.fields[c].ref(s);
-            csv.row(row);
-            ++rows;
-        }
-        try {
-            csv.close();
-        } catch (const std::runtime_error& e) {
-            fail("export-log", e.what());
-        }
-        const AlignmentLayout& al = alignment_layout();
-        if (g.name == "imu")
-            for (const auto& f : al.imu) imu_align.push_back(f.ref(rec->load(0)));
-        if (g.name == "mag")
-            for (const auto& f : al.mag) mag_align.push_back(f.ref(rec->load(0)));
-        spdlog::info("export-log: {} -> {}.csv: {} rows (every {} steps{})", g.topic, g.name, rows, every,
-                     g.fixes ? ", valid fixes only" : "");
+        const std::vector<double> align = export_group(g, *rec, recording, o);
+        if (g.name == "imu") imu_align = align;
+        if (g.name == "mag") mag_align = align;
         ++written;
     }
     if (written == 0) fail(record_dir.string(), "no record of a sensor topic (ImuSample, MagSample, AirSample, AtmSample, GnssSample)");
-    if (!imu_align.empty() && !mag_align.empty()) {
-        const AlignmentLayout& al = alignment_layout();
-        std::vector<std::string> columns;
-        for (const auto& f : al.imu) columns.push_back(f.name);
-        for (const auto& f : al.mag) columns.push_back(f.name);
-        std::vector<double> row = imu_align;
-        row.insert(row.end(), mag_align.begin(), mag_align.end());
-        CsvWriter csv(o.csv_dir / kAlignmentFile, columns);
-        csv.row(row);
-        csv.close();
-        spdlog::info("export-log: alignment of the first ImuSample and MagSample -> {}", kAlignmentFile);
-    } else {
-        spdlog::info("export-log: no {} (needs records of both ImuSample and MagSample)", kAlignmentFile);
-    }
+    write_alignment(imu_align, mag_align, o);
 }
 
 }  // namespace gdnav::app

@@ -130,15 +130,17 @@ private:
     std::uint64_t placed_{0};
 };
 
-}  // namespace
-
-void import_log(const ImportOptions& o) {
+void check_options(const ImportOptions& o) {
     if (!(o.dt_s > 0.0) || !std::isfinite(o.dt_s)) fail("--dt", "must be a positive number of seconds");
     if (!std::isfinite(o.t0_s)) fail("--t0", "must be a finite time in seconds");
     if (!(o.max_gap_s > 0.0)) fail("--max-gap", "must be positive");
     std::error_code ec;
     if (!fs::is_directory(o.csv_dir, ec)) fail(o.csv_dir.string(), "not a directory");
+}
 
+// The sensor files present in the folder, read and checked.
+std::vector<LoadedGroup> load_groups(const ImportOptions& o) {
+    std::error_code ec;
     std::vector<LoadedGroup> loaded;
     std::string names;
     for (const LogGroup& g : log_groups()) {
@@ -149,8 +151,11 @@ void import_log(const ImportOptions& o) {
         check_times(loaded.back(), o.max_gap_s);
     }
     if (loaded.empty()) fail(o.csv_dir.string(), "no sensor file (" + names + ")");
+    return loaded;
+}
 
-    // The grid: must start inside every continuous signal and, by default, ends where the first of them ends.
+// The grid: must start inside every continuous signal and, by default, ends where the first of them ends.
+std::uint64_t grid_steps(const std::vector<LoadedGroup>& loaded, const ImportOptions& o) {
     std::optional<std::uint64_t> covered;
     for (const auto& g : loaded) {
         if (g.group->fixes) continue;
@@ -174,33 +179,39 @@ void import_log(const ImportOptions& o) {
         steps = static_cast<std::uint64_t>(std::max(0.0, std::llround((t.at(t.rows() - 1, 0) - o.t0_s) / o.dt_s) + 1.0));
     }
     if (steps == 0) fail("--steps", "the grid has no step");
+    return steps;
+}
 
-    // Alignment (constant over the run).
+// alignment.csv (constant over the run), when the folder has one.
+std::optional<CsvTable> load_alignment(const ImportOptions& o) {
     const AlignmentLayout& al = alignment_layout();
     const fs::path align_file = o.csv_dir / kAlignmentFile;
-    std::optional<CsvTable> align;
-    if (fs::exists(align_file, ec)) {
-        std::vector<std::string> cols = csv_columns(al.imu, false);
-        for (const auto& c : csv_columns(al.mag, false)) cols.push_back(c);
-        align = read_csv(align_file, cols);
-        if (align->rows() != 1)
-            fail(align->file + ":" + std::to_string(align->lines[1]), "one data row expected (the alignment at t0)");
-    } else {
+    std::error_code ec;
+    if (!fs::exists(align_file, ec)) {
         spdlog::warn("import-log: no {}: the align_* fields are zero, so run the filters with init_mode: measurements "
                      "(--set components.nav_att.init_mode=measurements --set components.nav_pos.init_mode=measurements)",
                      align_file.string());
+        return std::nullopt;
     }
+    std::vector<std::string> cols = csv_columns(al.imu, false);
+    for (const auto& c : csv_columns(al.mag, false)) cols.push_back(c);
+    CsvTable align = read_csv(align_file, cols);
+    if (align.rows() != 1)
+        fail(align.file + ":" + std::to_string(align.lines[1]), "one data row expected (the alignment at t0)");
+    return align;
+}
 
-    // One recording, the groups interleaved step by step (log-time order, as the recorder writes).
-    const fs::path record_dir = o.run_dir / "record";
-    std::vector<std::string> topics;
-    for (const auto& g : loaded) topics.push_back(g.group->topic);
-    struct Track {
-        const LoadedGroup* g;
-        std::unique_ptr<Sample> s;
-        std::optional<ContinuousCursor> continuous;
-        std::optional<FixCursor> fixes;
-    };
+// One group's sample being filled step by step.
+struct Track {
+    const LoadedGroup* g;
+    std::unique_ptr<Sample> s;
+    std::optional<ContinuousCursor> continuous;
+    std::optional<FixCursor> fixes;
+};
+
+std::vector<Track> make_tracks(const std::vector<LoadedGroup>& loaded, const std::optional<CsvTable>& align,
+                               const ImportOptions& o, std::uint64_t steps) {
+    const AlignmentLayout& al = alignment_layout();
     std::vector<Track> tracks;
     for (const auto& g : loaded) {
         Track tr{&g, std::make_unique<Sample>(*runtime::find_topic(g.group->topic)), {}, {}};
@@ -212,6 +223,12 @@ void import_log(const ImportOptions& o) {
         else tr.continuous.emplace(g);
         tracks.push_back(std::move(tr));
     }
+    return tracks;
+}
+
+// One recording, the groups interleaved step by step (log-time order, as the recorder writes).
+void write_recording(const fs::path& record_dir, const std::vector<std::string>& topics, std::vector<Track>& tracks,
+                     const ImportOptions& o, std::uint64_t steps) {
     recorder::RecordingOptions ro;
     ro.t0_s = o.t0_s;
     ro.dt_s = o.dt_s;
@@ -238,6 +255,11 @@ void import_log(const ImportOptions& o) {
         if (dynamic_cast<const config::ConfigError*>(&e)) throw;
         fail(record_dir.string(), e.what());
     }
+}
+
+// The per-file log lines and <run_dir>/import.yaml.
+void report_import(const std::vector<Track>& tracks, const std::vector<std::string>& topics, bool aligned,
+                   const ImportOptions& o, std::uint64_t steps, const fs::path& record_dir) {
     for (const auto& tr : tracks) {
         if (tr.fixes)
             spdlog::info("import-log: {}: {} rows, {} fixes on the grid -> {}", tr.g->table.file, tr.g->table.rows(),
@@ -250,11 +272,26 @@ void import_log(const ImportOptions& o) {
     std::snprintf(grid, sizeof(grid), "t0_s: %.17g\ndt_s: %.17g\nsteps: %llu\n", o.t0_s, o.dt_s,
                   static_cast<unsigned long long>(steps));
     info << "# written by gdnav import-log (docs/replay.md)\nsource: \"" << fs::absolute(o.csv_dir).string() << "\"\n"
-         << grid << "alignment: " << (align ? "true" : "false") << "\ntopics: [";
+         << grid << "alignment: " << (aligned ? "true" : "false") << "\ntopics: [";
     for (std::size_t i = 0; i < topics.size(); ++i) info << (i ? ", " : "") << topics[i];
     info << "]\n";
     spdlog::info("import-log: {} steps of {} s from t0 = {} s (t = {} .. {} s) written to {}", steps, o.dt_s, o.t0_s,
                  fmt_t(o.t0_s), fmt_t(o.t0_s + static_cast<double>(steps - 1) * o.dt_s), record_dir.string());
+}
+
+}  // namespace
+
+void import_log(const ImportOptions& o) {
+    check_options(o);
+    const std::vector<LoadedGroup> loaded = load_groups(o);
+    const std::uint64_t steps = grid_steps(loaded, o);
+    const std::optional<CsvTable> align = load_alignment(o);
+    const fs::path record_dir = o.run_dir / "record";
+    std::vector<std::string> topics;
+    for (const auto& g : loaded) topics.push_back(g.group->topic);
+    std::vector<Track> tracks = make_tracks(loaded, align, o, steps);
+    write_recording(record_dir, topics, tracks, o, steps);
+    report_import(tracks, topics, align.has_value(), o, steps, record_dir);
 }
 
 }  // namespace gdnav::app

@@ -1,5 +1,6 @@
 #pragma once
-// gdnav report / the end of gdnav montecarlo: aggregate a batch directory's per-run metrics into the paper's tables
+// gdnav report / the end of gdnav montecarlo: the directories of one batch (its shards) merged into one block
+// (batch_merge.hpp); aggregate a batch directory's per-run metrics into the paper's tables
 // (report/tables.md, aggregate.yaml, runs.csv), draw the figures with tools/report/report.py and write the flight
 // review pages with tools/report/review.py (Debian's /usr/bin/python3 with matplotlib, h5py, numpy and plotly;
 // override with $GDNAV_PYTHON and $GDNAV_REPORT_SCRIPT).

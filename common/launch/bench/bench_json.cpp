@@ -1,4 +1,4 @@
-#include "bench_json.hpp"
+#include "launch/bench/bench_json.hpp"
 
 #include <cmath>
 #include <cstdio>

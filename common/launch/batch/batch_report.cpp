@@ -1,0 +1,156 @@
+#include "launch/batch/batch_report.hpp"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+
+#include <spdlog/spdlog.h>
+
+#include "launch/batch/batch_dir.hpp"
+#include "launch/batch/batch_merge.hpp"
+#include "config/config.hpp"
+#include "metrics/report_tables.hpp"
+#include "framework/run_config.hpp"
+
+namespace gdnav::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Label of a batch in the tables: "#1" / "#2" for the paper scenarios, else the scenario name.
+std::string batch_label(const fs::path& dir) {
+    std::string label = dir.filename().string();
+    try {
+        const config::Config b = config::Config::load(dir / "batch.yaml");
+        const std::string gen = b.get_string("generator", "");
+        if (gen == "paper_scenario1") return "#1";
+        if (gen == "paper_scenario2") return "#2";
+        label = b.get_string("scenario", label);
+    } catch (const std::exception&) {
+    }
+    return label;
+}
+
+// report.py reads one batch folder: for a block of several directories (shards), a folder of links to their runs.
+fs::path runs_view(const std::vector<fs::path>& dirs, const std::vector<metrics::RunRecord>& runs, const fs::path& at) {
+    if (dirs.size() == 1) return dirs.front();
+    std::error_code ec;
+    fs::remove_all(at, ec);
+    fs::create_directories(at / "runs");
+    for (const auto& r : runs)
+        for (const auto& d : dirs) {
+            const fs::path run = fs::absolute(d / "runs" / run_dir_name(r.run_index));
+            if (fs::exists(run / "metrics.yaml")) {
+                fs::create_directory_symlink(run, at / "runs" / run_dir_name(r.run_index));
+                break;
+            }
+        }
+    return at;
+}
+
+void write_text(const fs::path& p, const std::string& text) {
+    std::ofstream f(p, std::ios::trunc);
+    f << text;
+    if (!f) throw std::runtime_error("cannot write " + p.string());
+}
+
+// Runs a Python tool of tools/report/ (report.py: PNG figures; review.py: HTML flight review pages) with Debian's
+// /usr/bin/python3 ($GDNAV_PYTHON); $GDNAV_REPORT_SCRIPT names report.py elsewhere, the other tools beside it.
+int run_report_tool(const std::string& name, std::vector<std::string> args) {
+    const char* py_env = std::getenv("GDNAV_PYTHON");
+    const char* script_env = std::getenv("GDNAV_REPORT_SCRIPT");
+    const std::string py = py_env && *py_env ? py_env : "/usr/bin/python3";
+    const fs::path report = script_env && *script_env ? fs::path(script_env)
+                                                      : runtime::config_dir().parent_path() / "tools/report/report.py";
+    const fs::path script = name == "report.py" ? report : report.parent_path() / name;
+    if (!fs::exists(script)) {
+        spdlog::error("figures: {} not found (set GDNAV_REPORT_SCRIPT)", script.string());
+        return 1;
+    }
+    args.insert(args.begin(), {py, script.string()});
+    std::vector<char*> argv;
+    for (auto& s : args) argv.push_back(s.data());
+    argv.push_back(nullptr);
+    const pid_t pid = fork();
+    if (pid < 0) return 1;
+    if (pid == 0) {
+        execv(py.c_str(), argv.data());
+        _exit(127);
+    }
+    int st = 0;
+    while (waitpid(pid, &st, 0) < 0) {
+    }
+    const int code = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
+    if (code != 0) spdlog::error("figures: {} {} failed with code {}", py, script.string(), code);
+    return code;
+}
+
+}  // namespace
+
+int write_batch_report(const std::vector<fs::path>& dirs, const ReportOptions& o, std::vector<std::size_t>* counts) {
+    if (dirs.empty()) throw config::ConfigError("report: no batch directory given");
+    const std::vector<std::vector<fs::path>> groups = group_batch_dirs(dirs);
+    const fs::path out = o.out.empty() ? dirs.front() / "report" : o.out;
+    fs::create_directories(out);
+    std::vector<metrics::LabelledBatch> batches;
+    std::string preamble = "# Aggregated navigation system error (NSE)\n\n";
+    for (const auto& group : groups) {
+        metrics::LabelledBatch b;
+        b.label = batch_label(group.front());
+        MergedRuns merged = merge_complete_runs(group);
+        b.runs = std::move(merged.runs);
+        b.aggregate = metrics::aggregate_runs(b.runs);
+        if (counts) counts->push_back(b.runs.size());
+        std::string where;
+        for (const auto& d : group) where += (where.empty() ? "" : ", ") + d.string();
+        preamble += "- " + b.label + ": " + std::to_string(b.runs.size()) + " complete runs in " + where;
+        if (!merged.missing.empty()) {
+            preamble += " (missing runs: " + index_ranges(merged.missing) + ")";
+            spdlog::warn("report: {}: {} run(s) of the batch missing or incomplete: {}", where, merged.missing.size(),
+                         index_ranges(merged.missing));
+        }
+        preamble += "\n";
+        if (!merged.duplicates.empty())
+            spdlog::warn("report: {}: run(s) {} found in more than one directory (identical metrics, counted once)",
+                         where, index_ranges(merged.duplicates));
+        if (b.runs.empty()) spdlog::warn("report: no complete run in {}", where);
+        batches.push_back(std::move(b));
+    }
+    preamble += "\nAggregated metrics: mean, population std and max (largest |value|, sign kept; for per-run maxima "
+                "mean and std of |max|) across runs of each per-run metric (t in [0, t_end]). Final: value at t_end. "
+                "Distance: true ground distance since t_GNSS; % = 100 · error / distance per run, then aggregated.\n";
+    write_text(out / "tables.md", metrics::paper_tables_markdown(batches, preamble));
+    if (batches.size() == 1) {
+        write_text(out / "aggregate.yaml", metrics::to_yaml(batches.front().aggregate));
+        write_text(out / "runs.csv", metrics::runs_csv(batches.front().runs));
+    } else {
+        for (std::size_t i = 0; i < batches.size(); ++i) {
+            write_text(out / ("aggregate_" + std::to_string(i + 1) + ".yaml"), metrics::to_yaml(batches[i].aggregate));
+            write_text(out / ("runs_" + std::to_string(i + 1) + ".csv"), metrics::runs_csv(batches[i].runs));
+        }
+    }
+    spdlog::info("report: tables written to {}", (out / "tables.md").string());
+    int code = 0;
+    if (o.figures)
+        for (std::size_t i = 0; i < groups.size(); ++i)
+            if (!batches[i].runs.empty()) {
+                const fs::path fig_out = groups.size() == 1 ? out : out / ("batch_" + std::to_string(i + 1));
+                const fs::path view = out / ".runs_view";
+                const fs::path batch = runs_view(groups[i], batches[i].runs, view);
+                code = std::max(code, run_report_tool("report.py", {batch.string(), "--out", fig_out.string()}));
+                const std::string csv = batches.size() == 1 ? "runs.csv" : "runs_" + std::to_string(i + 1) + ".csv";
+                if (o.review)
+                    code = std::max(code, run_report_tool("review.py", {batch.string(), "--out", fig_out.string(),
+                                                                        "--tables", (out / "tables.md").string(),
+                                                                        "--runs-csv", (out / csv).string()}));
+                std::error_code ec;
+                fs::remove_all(view, ec);
+            }
+    return code;
+}
+
+}  // namespace gdnav::app

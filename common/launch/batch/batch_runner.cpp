@@ -1,0 +1,354 @@
+#include "launch/batch/batch_runner.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <thread>
+#include <vector>
+
+#include <spdlog/spdlog.h>
+
+#include "dds/process/process_signals.hpp"
+#include "framework/lockstep.hpp"
+#include "framework/run_config.hpp"
+#include "metrics/run_record.hpp"
+
+namespace gdnav::app {
+
+namespace fs = std::filesystem;
+using namespace gdnav::runtime;
+
+namespace {
+
+struct Worker {
+    std::uint64_t run{0};
+    pid_t pid{0};
+    int slot{0};
+    double started_s{0.0};
+    fs::path dir;
+};
+
+struct Failure {
+    std::uint64_t run;
+    int code;
+    std::string last_line;
+};
+
+std::string read_tail(const fs::path& p, std::size_t bytes = 4096) {
+    std::ifstream f(p, std::ios::binary);
+    if (!f) return {};
+    f.seekg(0, std::ios::end);
+    const auto size = static_cast<std::size_t>(f.tellg());
+    const std::size_t n = std::min(size, bytes);
+    f.seekg(static_cast<std::streamoff>(size - n));
+    std::string s(n, '\0');
+    f.read(s.data(), static_cast<std::streamsize>(n));
+    return s;
+}
+
+std::string last_line(const fs::path& log) {
+    std::istringstream in(read_tail(log));
+    std::string line, last;
+    while (std::getline(in, line))
+        if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
+    return last;
+}
+
+// Fraction of a running run done, from the last "step k/N" progress line of its log (0 when unknown).
+double progress_of(const fs::path& log) {
+    static const std::regex re(R"(step (\d+)/(\d+))");
+    const std::string tail = read_tail(log);
+    double frac = 0.0;
+    for (std::sregex_iterator it(tail.begin(), tail.end(), re), end; it != end; ++it)
+        frac = std::stod((*it)[1]) / std::max(1.0, std::stod((*it)[2]));
+    return std::clamp(frac, 0.0, 1.0);
+}
+
+pid_t spawn_logged(const fs::path& exe, const std::vector<std::string>& args, const fs::path& log) {
+    std::vector<std::string> all{exe.string()};
+    all.insert(all.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (auto& s : all) argv.push_back(s.data());
+    argv.push_back(nullptr);
+    const pid_t parent = getpid();
+    const pid_t pid = fork();
+    if (pid < 0) throw std::runtime_error("fork failed");
+    if (pid == 0) {
+        prctl(PR_SET_PDEATHSIG, SIGTERM);
+        if (getppid() != parent) _exit(1);
+        const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (fd >= 0) {
+            dup2(fd, STDOUT_FILENO);
+            dup2(fd, STDERR_FILENO);
+            close(fd);
+        }
+        execv(exe.c_str(), argv.data());
+        _exit(127);
+    }
+    return pid;
+}
+
+std::string hms(double s) {
+    if (!std::isfinite(s) || s < 0) return "--";
+    const long t = std::lround(s);
+    char b[32];
+    if (t >= 3600)
+        std::snprintf(b, sizeof(b), "%ldh%02ldm", t / 3600, (t / 60) % 60);
+    else
+        std::snprintf(b, sizeof(b), "%ldm%02lds", t / 60, t % 60);
+    return b;
+}
+
+// The scenario every run of the batch reads: the spec's seed and steps applied, the per-run keys removed.
+std::string batch_scenario_text(const BatchSpec& spec) {
+    YAML::Node doc = YAML::Clone(spec.doc);
+    if (spec.seed_given || !doc["run"]["seed"]) doc["run"]["seed"] = spec.seed;
+    if (spec.steps > 0) {
+        doc["run"].remove("duration_s");
+        doc["run"]["steps"] = spec.steps;
+    }
+    doc["run"].remove("run_index");
+    doc["run"].remove("out_dir");
+    doc["run"].remove("domain_id");
+    YAML::Emitter em;
+    em.SetDoublePrecision(17);
+    em << doc;
+    return std::string(em.c_str()) + "\n";
+}
+
+// Writes DIR/scenario.yaml, or checks that an existing one (a batch being resumed) is the same.
+void prepare_batch_dir(const fs::path& dir, const std::string& text) {
+    fs::create_directories(dir / "runs");
+    const fs::path file = dir / "scenario.yaml";
+    const std::string content = "# Scenario of this batch (overrides applied); written by gdnav montecarlo\n" + text;
+    if (fs::exists(file)) {
+        if (read_text(file) != content)
+            throw config::ConfigError("montecarlo: " + dir.string() +
+                                      " holds a batch of a different scenario or settings (scenario.yaml differs); "
+                                      "use another --out or remove the folder");
+        return;
+    }
+    write_file_atomic(file, content);  // shards sharing DIR may write it at the same time (the same text)
+}
+
+// DIR/batch.yaml: the same text from every shard of a batch (they may share DIR); a whole batch records its jobs.
+void write_batch_record(const BatchSpec& spec, const fs::path& dir, std::uint64_t seed, const Shard& shard) {
+    const std::string generator =
+        spec.doc["generator"] && spec.doc["generator"]["name"] ? spec.doc["generator"]["name"].Scalar() : "";
+    std::ostringstream b;
+    b << "# gdnav montecarlo batch (the latest invocation)\nscenario: " << spec.scenario
+      << "\nfile: " << spec.file.string() << "\ngenerator: " << (generator.empty() ? "none" : generator)
+      << "\nseed: " << seed << "\nfirst: " << spec.first << "\nruns: " << spec.runs << "\nlayout: " << spec.layout
+      << "\n";
+    if (shard.whole())
+        b << "jobs: " << spec.jobs << "\n";
+    else
+        b << "shards: " << shard.count << "\n";
+    write_file_atomic(dir / "batch.yaml", b.str());
+}
+
+// The batch as validated and recorded in its directory.
+struct PreparedBatch {
+    fs::path dir;
+    std::uint64_t seed{0};
+    double sim_per_run_s{0.0};
+    std::vector<std::uint64_t> mine;  // this shard's run indices
+};
+
+PreparedBatch prepare_batch(const BatchSpec& spec, const ComponentRegistry& reg, const Shard& shard) {
+    const std::string text = batch_scenario_text(spec);
+    // Validate the whole configuration once (run `first`) before starting anything.
+    RunOverrides ro;
+    ro.run_index = spec.first;
+    const RunConfig rc0 = RunConfig::parse(text, spec.file.string(), ro);
+    (void)rc0.build(reg);
+    PreparedBatch p;
+    p.seed = rc0.info.seed;
+    p.sim_per_run_s = static_cast<double>(rc0.info.steps) * rc0.info.dt_s;
+    p.dir = fs::absolute(spec.out);
+    prepare_batch_dir(p.dir, text);
+    write_batch_record(spec, p.dir, p.seed, shard);
+    p.mine = shard_runs(spec.first, spec.runs, shard);
+    if (!shard.whole()) write_shard_record(p.dir, shard, spec.jobs, p.mine.size());
+    return p;
+}
+
+// Runs of the shard still to do: those without a complete metrics.yaml of this seed and index.
+std::vector<std::uint64_t> runs_to_do(const PreparedBatch& p, std::size_t& skipped) {
+    std::vector<std::uint64_t> todo;
+    skipped = 0;
+    for (const std::uint64_t i : p.mine) {
+        const fs::path m = p.dir / "runs" / run_dir_name(i) / "metrics.yaml";
+        bool done = false;
+        if (metrics::run_record_complete(m)) {
+            const auto r = metrics::read_run_record(m);
+            done = r.seed == p.seed && r.run_index == i;
+        }
+        if (done)
+            ++skipped;
+        else
+            todo.push_back(i);
+    }
+    return todo;
+}
+
+// The supervision loop of one shard: starts up to `jobs` runs, reaps them, prints progress, stops on Ctrl-C.
+class ShardRun {
+public:
+    ShardRun(const BatchSpec& spec, const PreparedBatch& p, std::vector<std::uint64_t> todo, std::size_t skipped)
+        : spec_(spec), p_(p), todo_(std::move(todo)), skipped_(skipped), slot_busy_(spec.jobs, false) {}
+
+    void run() {
+        install_stop_signal_handlers();
+        exe_ = fs::read_symlink("/proc/self/exe");
+        tty_ = isatty(STDERR_FILENO) != 0;
+        domain_base_ = static_cast<int>(getpid() % 200);
+        t0_ = steady_now_s();
+        while ((next_ < todo_.size() && !interrupted_) || !workers_.empty()) {
+            if (stop_requested() && !interrupted_) interrupt();
+            start_workers();
+            if (reap_one()) continue;
+            if (interrupted_ && steady_now_s() > kill_at_s_)
+                for (const auto& w : workers_) kill(w.pid, SIGKILL);  // the launchers had 10 s to stop their processes
+            print_progress(false);
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
+        print_progress(true);
+    }
+
+    int finish(const std::string& which) const {
+        if (!failures_.empty()) {
+            spdlog::error("montecarlo: {} run(s) failed:", failures_.size());
+            for (const auto& f : failures_)
+                spdlog::error("  run {} ({}): exit code {}: {}", f.run, (p_.dir / "runs" / run_dir_name(f.run)).string(),
+                              f.code, f.last_line);
+        }
+        if (interrupted_) {
+            spdlog::warn(
+                "montecarlo: interrupted after {} new runs; run the same command again to complete the missing ones",
+                done_now_);
+            return kExitInterrupted;
+        }
+        spdlog::info("montecarlo:{} {} complete runs ({} new, {} skipped), {} failed, {:.1f} s", which,
+                     skipped_ + done_now_, done_now_, skipped_, failures_.size(), steady_now_s() - t0_);
+        return failures_.empty() ? 0 : 1;
+    }
+
+private:
+    void interrupt() {
+        interrupted_ = true;
+        if (tty_) std::fprintf(stderr, "\n");
+        spdlog::warn("montecarlo: interrupted; stopping {} running runs", workers_.size());
+        for (const auto& w : workers_) kill(w.pid, SIGTERM);
+        kill_at_s_ = steady_now_s() + 10.0;
+    }
+
+    void start_workers() {
+        while (!interrupted_ && next_ < todo_.size() && workers_.size() < spec_.jobs) {
+            Worker w;
+            w.run = todo_[next_++];
+            w.slot = static_cast<int>(std::find(slot_busy_.begin(), slot_busy_.end(), false) - slot_busy_.begin());
+            slot_busy_[static_cast<std::size_t>(w.slot)] = true;
+            w.dir = p_.dir / "runs" / run_dir_name(w.run);
+            std::error_code ec;
+            fs::remove_all(w.dir, ec);  // stale files of an interrupted attempt
+            fs::create_directories(w.dir);
+            const int domain = 20 + (domain_base_ + w.slot) % 200;
+            const std::vector<std::string> args{"run",         "--scenario", (p_.dir / "scenario.yaml").string(),
+                                                "--seed",      std::to_string(p_.seed),
+                                                "--run",       std::to_string(w.run),
+                                                "--layout",    spec_.layout,
+                                                "--out",       w.dir.string(),
+                                                "--domain",    std::to_string(domain),
+                                                "--log-level", spec_.log_level};
+            w.pid = spawn_logged(exe_, args, w.dir / "log.txt");
+            w.started_s = steady_now_s();
+            workers_.push_back(w);
+        }
+    }
+
+    // Reaps one ended child, if any; true when a child was reaped.
+    bool reap_one() {
+        int st = 0;
+        const pid_t pid = waitpid(-1, &st, WNOHANG);
+        if (pid <= 0) return false;
+        auto it = std::find_if(workers_.begin(), workers_.end(), [pid](const Worker& w) { return w.pid == pid; });
+        if (it != workers_.end()) {
+            const int code = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
+            const bool ok = code == 0 && metrics::run_record_complete(it->dir / "metrics.yaml");
+            if (ok) {
+                ++done_now_;
+            } else if (!interrupted_) {
+                failures_.push_back({it->run, code == 0 ? 1 : code, last_line(it->dir / "log.txt")});
+            }
+            slot_busy_[static_cast<std::size_t>(it->slot)] = false;
+            workers_.erase(it);
+            print_progress(false);
+        }
+        return true;
+    }
+
+    void print_progress(bool final_line) {
+        const double now = steady_now_s();
+        if (!final_line && now - last_print_ < (tty_ ? 0.5 : 15.0)) return;
+        last_print_ = now;
+        double partial = 0.0;
+        for (const auto& w : workers_) partial += progress_of(w.dir / "log.txt");
+        const double elapsed = now - t0_;
+        const double sim_done = (static_cast<double>(done_now_ + failures_.size()) + partial) * p_.sim_per_run_s;
+        const double speed = elapsed > 0 ? sim_done / elapsed : 0.0;
+        const double remaining = static_cast<double>(todo_.size()) * p_.sim_per_run_s - sim_done;
+        char line[256];
+        std::snprintf(line, sizeof(line),
+                      "montecarlo: %zu/%llu runs done, %zu failed, %zu running | %s elapsed, ETA %s | %.0fx real time",
+                      skipped_ + done_now_, static_cast<unsigned long long>(p_.mine.size()), failures_.size(),
+                      workers_.size(), hms(elapsed).c_str(), speed > 0 ? hms(remaining / speed).c_str() : "--", speed);
+        if (tty_)
+            std::fprintf(stderr, "\r%s\033[K%s", line, final_line ? "\n" : "");
+        else
+            std::fprintf(stderr, "%s\n", line);
+        std::fflush(stderr);
+    }
+
+    const BatchSpec& spec_;
+    const PreparedBatch& p_;
+    const std::vector<std::uint64_t> todo_;
+    const std::size_t skipped_;
+    std::vector<bool> slot_busy_;
+    std::vector<Worker> workers_;
+    std::vector<Failure> failures_;
+    fs::path exe_;
+    bool tty_{false};
+    int domain_base_{0};
+    std::size_t next_{0}, done_now_{0};
+    double t0_{0.0}, last_print_{0.0}, kill_at_s_{0.0};
+    bool interrupted_{false};
+};
+
+}  // namespace
+
+int run_batch_shard(const BatchSpec& spec, const ComponentRegistry& reg, const Shard& shard) {
+    const PreparedBatch p = prepare_batch(spec, reg, shard);
+    std::size_t skipped = 0;
+    std::vector<std::uint64_t> todo = runs_to_do(p, skipped);
+    const std::string which =
+        shard.whole() ? "" : " shard " + std::to_string(shard.index) + "/" + std::to_string(shard.count) + ":";
+    spdlog::info("montecarlo:{} {} runs of {} (seed {}, runs {}..{}, layout {}, {} jobs) -> {}; {} already complete",
+                 which, p.mine.size(), spec.file.filename().string(), p.seed, spec.first, spec.first + spec.runs - 1,
+                 spec.layout, spec.jobs, p.dir.string(), skipped);
+    ShardRun r(spec, p, std::move(todo), skipped);
+    r.run();
+    return r.finish(which);
+}
+
+}  // namespace gdnav::app

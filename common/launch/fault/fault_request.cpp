@@ -1,0 +1,95 @@
+#include "launch/fault/fault_request.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <thread>
+
+#include <fastdds/dds/subscriber/SampleInfo.hpp>
+#include <spdlog/spdlog.h>
+#include <yaml-cpp/yaml.h>
+
+#include "config/config.hpp"
+#include "dds/dds_context.hpp"
+#include "dds/security/security.hpp"
+#include "framework/lockstep.hpp"
+#include "framework/run_config.hpp"
+#include "framework/topic_types.hpp"
+#include "msgs/messages.hpp"
+
+namespace gdnav::app {
+
+using namespace eprosima::fastdds::dds;
+
+std::string fault_entry_yaml(const FaultRequestSpec& a) {
+    YAML::Node e;
+    e["target"] = a.target;
+    e["kind"] = a.kind;
+    if (!a.topic.empty()) e["topic"] = a.topic;
+    if (a.duration_s) e["duration_s"] = *a.duration_s;
+    if (a.steps) e["steps"] = *a.steps;
+    if (a.p) e["p"] = *a.p;
+    for (const auto& f : a.fields) {
+        const auto eq = f.find('=');
+        if (a.kind == "nan") {
+            e["fields"].push_back(f);
+        } else if (eq == std::string::npos) {
+            throw config::ConfigError("config error: --field '" + f + "': expected NAME=VALUE (e.g. h_m=5 or "
+                                      "v_n_mps=[1,0,0])");
+        } else {
+            e["fields"][f.substr(0, eq)] = YAML::Load(f.substr(eq + 1));
+        }
+    }
+    YAML::Emitter em;
+    em.SetDoublePrecision(17);
+    em << YAML::Flow << e;
+    return em.c_str();
+}
+
+int send_fault_request(const FaultRequestSpec& a, const std::string& entry) {
+    runtime::register_gdnav_topics();
+    runtime::DdsContext dds(a.domain, runtime::config_dir() / "dds/gdnav_profiles.xml", "gdnav.fault", a.security,
+                            runtime::security::kOperatorIdentity);
+    DataWriter* w = dds.writer(topics::kFaultRequest, runtime::message_ops<msg::FaultRequest>(),
+                               runtime::kControlWriterProfile);
+    DataReader* r = dds.reader(topics::kStatus, runtime::message_ops<msg::ComponentStatus>(),
+                               runtime::kControlReaderProfile);
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(a.timeout_s);
+    PublicationMatchedStatus st;
+    while (w->get_publication_matched_status(st), st.current_count == 0) {
+        if (std::chrono::steady_clock::now() > end) {
+            spdlog::error("no clock on DDS domain {} took the fault request within {:.0f} s (is a run going?)",
+                          a.domain, a.timeout_s);
+            return runtime::kExitStartup;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    msg::FaultRequest req;
+    req.run_id(a.run_index);
+    req.request_id((static_cast<std::uint64_t>(getpid()) << 20) ^
+                   static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count() & 0xfffff));
+    req.fault(entry);
+    w->write(&req);
+    const std::string prefix = "fault " + std::to_string(req.request_id()) + " ";
+    msg::ComponentStatus s;
+    SampleInfo info;
+    while (std::chrono::steady_clock::now() < end) {
+        while (r->take_next_sample(&s, &info) == ReturnCode_t::RETCODE_OK) {
+            if (!info.valid_data || s.member().to_string() != runtime::kClockName) continue;
+            const std::string m = s.message().to_string();
+            if (m.rfind(prefix, 0) != 0) continue;
+            if (s.kind() == msg::STATUS_ERROR) {
+                spdlog::error("{}", m);
+                return runtime::kExitConfig;
+            }
+            spdlog::info("{}", m);
+            return runtime::kExitOk;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    spdlog::error("the clock on DDS domain {} did not answer the fault request within {:.0f} s", a.domain,
+                  a.timeout_s);
+    return runtime::kExitStartup;
+}
+
+}  // namespace gdnav::app

@@ -1,0 +1,20 @@
+#pragma once
+// The identities `gdnav pki init` makes for a run: the clock (Tick, RunControl, ComponentStatus), `operator`
+// (FaultRequest, for gdnav fault), every configured member of the run (its output topics, StepDone,
+// ComponentStatus), `recorder` (added by gdnav run --record), `composed` (every member's outputs: the process of the
+// composed layout) and each external member given as NAME=TOPIC[,TOPIC...].
+#include <string>
+#include <vector>
+
+#include "framework/registry.hpp"
+#include "framework/run_config.hpp"
+#include "launch/pki/pki.hpp"
+
+namespace gdnav::runtime::security {
+
+// Throws config::ConfigError (one line naming the --member value) for a malformed external member or a name that
+// already has an identity.
+std::vector<Identity> run_identities(const RunConfig& rc, const ComponentRegistry& reg,
+                                     const std::vector<std::string>& external_members);
+
+}  // namespace gdnav::runtime::security
