@@ -24,9 +24,14 @@ function(gdnav_idl_library target)
       configure_file(${gen_input}.tmp ${gen_input} COPYONLY)
     endif()
     set(gen ${outdir}/${base}.cxx ${outdir}/${base}.h ${outdir}/${base}PubSubTypes.cxx ${outdir}/${base}PubSubTypes.h)
+    # fastddsgen's temporary files go to a folder of this library's own (-t): in the shared default temporary
+    # folder, two builds generating the same IDL at once overwrite each other's files and fastddsgen can end without
+    # writing some outputs; the check after it (sha256sum fails on a missing file) stops the build at this step.
     add_custom_command(
       OUTPUT ${gen}
-      COMMAND ${FASTDDSGEN} -replace -d ${outdir} ${gen_input}
+      COMMAND ${CMAKE_COMMAND} -E make_directory ${outdir}/tmp_${base}
+      COMMAND ${FASTDDSGEN} -replace -t ${outdir}/tmp_${base} -d ${outdir} ${gen_input}
+      COMMAND ${CMAKE_COMMAND} -E sha256sum ${gen}
       DEPENDS ${abs}
       COMMENT "fastddsgen ${base}.idl"
       VERBATIM)
