@@ -25,9 +25,9 @@ packages=(
   libssl-dev openssl
   iproute2 procps nftables iptables libnetfilter-queue-dev
   nodejs
-  chromium  # the flight review test opens the HTML pages of gdnav report headless (tests/integration/review_node)
+  chromium  # the flight review test opens the HTML pages of gdnav report headless (tests/integration/viewing/review_node)
 )
-# npm: the MCAP test reads recordings with the official TypeScript reader (tests/integration/mcap_node). NodeSource's
+# npm: the MCAP test reads recordings with the official TypeScript reader (tests/integration/viewing/mcap_node). NodeSource's
 # nodejs package brings its own npm (Debian's npm would conflict with it).
 command -v npm > /dev/null 2>&1 || packages+=(npm)
 
