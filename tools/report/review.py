@@ -212,6 +212,7 @@ def band_figure(stats, t_gnss):
     keep = stats.t >= 0.0
     step = stride_for(int(keep.sum()))
     tt = rounded(stats.t[keep][::step], 2)
+    t_end = float(stats.t[-1]) if len(stats.t) else 0.0
     for row, (_, cols, unit) in enumerate(ERROR_ROWS, start=1):
         for k, (col, label, scale, dec) in enumerate(cols):
             mean, std = stats.mean_std(col)

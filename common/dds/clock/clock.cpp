@@ -145,76 +145,85 @@ int Clock::Impl::loop() {
             return finish(kExitInterrupted, now);
         }
         read_status(now);
-        if (phase == Phase::Gather) {
-            gather(now);
-            if (phase == Phase::Gather && check_gather_timeouts(now)) return finish(kExitStartup, now);
-        } else if (phase == Phase::Configured) {
-            if (everyone_ready()) {
-                phase = Phase::Running;
-                run_start_s = now;
-                last_progress_s = now;
-                next_log_s = now + 2.0;
-                spdlog::info("all members ready; run {} starts ({} steps)", rc.info.run_index, rc.info.steps);
-                send_tick(now);
-            } else if (now - configured_s > rc.startup_timeout_s) {
-                std::string missing;
-                for (Member* m : table)
-                    if (!m->ready && !m->free) missing += (missing.empty() ? "" : ", ") + m->name;
-                abort_reason = "start-up timeout: members not ready (DDS matching) after " +
-                               fmt::format("{:.0f}", rc.startup_timeout_s) + " s: " + missing;
-                return finish(kExitStartup, now);
-            }
-            check_liveness(now);
-        } else {
-            read_done(now);
-            read_fault_requests(now);
-            check_liveness(now);
-            if (aborted) return finish(kExitAborted, now);
-            if (adopting) {
-                if (!all_adopted()) {
-                    if (now - adopt_start_s > rc.stall_timeout_s) {
-                        std::string late;
-                        for (const Member* m : table)
-                            if (!m->dead && !m->free && m->faults_version < faults_version)
-                                late += (late.empty() ? "" : ", ") + m->name;
-                        aborted = true;
-                        abort_reason = "fault schedule version " + std::to_string(faults_version) +
-                                       " not adopted within " + fmt::format("{:.0f}", rc.stall_timeout_s) +
-                                       " s by: " + late;
-                        return finish(kExitAborted, now);
-                    }
-                    heartbeat(now);
-                    continue;
-                }
-                adopting = false;
-                spdlog::info("fault schedule version {} adopted by every member", faults_version);
-            }
-            if (!tick_pending && all_done()) {
-                last_progress_s = now;
-                current = min_done();
-                if (current >= rc.info.steps) {
-                    current = rc.info.steps;
-                    return finish(kExitOk, now);
-                }
-                if (!schedule.empty() && essential_killed()) return finish(kExitAborted, now);
-                if (rc.realtime > 0.0) {
-                    tick_pending = true;
-                } else {
-                    send_tick(now);
-                }
-                log_progress(now, false);
-                heartbeat(now);
-                continue;  // skip waiting: members answer fast
-            }
-            if (now - last_progress_s > rc.stall_timeout_s) {
-                aborted = true;
-                abort_reason = "stalled at step " + std::to_string(current) + " for " +
-                               fmt::format("{:.0f}", rc.stall_timeout_s) + " s waiting for: " + waiting_for();
-                return finish(kExitAborted, now);
-            }
-        }
+        const int code = phase == Phase::Gather       ? gather_phase(now)
+                         : phase == Phase::Configured ? configured_phase(now)
+                                                      : running_phase(now);
+        if (code != kGoOn) return code;
         heartbeat(now);
     }
+}
+
+int Clock::Impl::gather_phase(double now) {
+    gather(now);
+    if (phase == Phase::Gather && check_gather_timeouts(now)) return finish(kExitStartup, now);
+    return kGoOn;
+}
+
+int Clock::Impl::configured_phase(double now) {
+    if (everyone_ready()) {
+        phase = Phase::Running;
+        run_start_s = now;
+        last_progress_s = now;
+        next_log_s = now + 2.0;
+        spdlog::info("all members ready; run {} starts ({} steps)", rc.info.run_index, rc.info.steps);
+        send_tick(now);
+    } else if (now - configured_s > rc.startup_timeout_s) {
+        std::string missing;
+        for (Member* m : table)
+            if (!m->ready && !m->free) missing += (missing.empty() ? "" : ", ") + m->name;
+        abort_reason = "start-up timeout: members not ready (DDS matching) after " +
+                       fmt::format("{:.0f}", rc.startup_timeout_s) + " s: " + missing;
+        return finish(kExitStartup, now);
+    }
+    check_liveness(now);
+    return kGoOn;
+}
+
+int Clock::Impl::running_phase(double now) {
+    read_done(now);
+    read_fault_requests(now);
+    check_liveness(now);
+    if (aborted) return finish(kExitAborted, now);
+    if (adopting) {
+        if (!all_adopted()) {
+            if (now - adopt_start_s <= rc.stall_timeout_s) return kGoOn;
+            std::string late;
+            for (const Member* m : table)
+                if (!m->dead && !m->free && m->faults_version < faults_version)
+                    late += (late.empty() ? "" : ", ") + m->name;
+            aborted = true;
+            abort_reason = "fault schedule version " + std::to_string(faults_version) + " not adopted within " +
+                           fmt::format("{:.0f}", rc.stall_timeout_s) + " s by: " + late;
+            return finish(kExitAborted, now);
+        }
+        adopting = false;
+        spdlog::info("fault schedule version {} adopted by every member", faults_version);
+    }
+    if (!tick_pending && all_done()) return advance_tick(now);
+    if (now - last_progress_s > rc.stall_timeout_s) {
+        aborted = true;
+        abort_reason = "stalled at step " + std::to_string(current) + " for " +
+                       fmt::format("{:.0f}", rc.stall_timeout_s) + " s waiting for: " + waiting_for();
+        return finish(kExitAborted, now);
+    }
+    return kGoOn;
+}
+
+int Clock::Impl::advance_tick(double now) {
+    last_progress_s = now;
+    current = min_done();
+    if (current >= rc.info.steps) {
+        current = rc.info.steps;
+        return finish(kExitOk, now);
+    }
+    if (!schedule.empty() && essential_killed()) return finish(kExitAborted, now);
+    if (rc.realtime > 0.0) {
+        tick_pending = true;
+    } else {
+        send_tick(now);
+    }
+    log_progress(now, false);
+    return kGoOn;
 }
 
 Clock::Clock(const RunConfig& rc, ClockOptions opt) : impl_(std::make_unique<Impl>(rc, std::move(opt))) {}

@@ -166,6 +166,13 @@ struct Clock::Impl {
     int finish(int code, double now);
 
     int loop();
+    // One pass of the loop in each phase: an exit code when the run ends, else kGoOn.
+    static constexpr int kGoOn = -1;
+    int gather_phase(double now);
+    int configured_phase(double now);
+    int running_phase(double now);
+    // Every live member reported the step: the next Tick (now, or at its wall time when paced), or the end.
+    int advance_tick(double now);
 };
 
 }  // namespace gdnav::runtime
