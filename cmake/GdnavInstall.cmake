@@ -49,6 +49,7 @@ set(_gdnav_moved_headers
   runtime/status_filter.hpp dds/filters/status_filter.hpp
   runtime/stride_filter.hpp dds/filters/stride_filter.hpp
   runtime/topic_types.hpp framework/topic_types.hpp)
+file(REMOVE_RECURSE ${CMAKE_BINARY_DIR}/compat_headers)  # only the forwarding headers of this list
 while(_gdnav_moved_headers)
   list(POP_FRONT _gdnav_moved_headers _old _new)
   set(_fwd ${CMAKE_BINARY_DIR}/compat_headers/${_old})
