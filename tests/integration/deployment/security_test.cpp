@@ -1,4 +1,4 @@
-// Issue 12 item 5: DDS Security (dds/security, gdnav pki init, run.security / --security).
+// DDS Security (dds/security, gdnav pki init, run.security / --security).
 //  - a secure scenario-#2 run (composed layout: the clock and one process) gives bit-identical outputs to the plain
 //    run; the distributed layout is refused with --security (Fast DDS 2.9.1 limitation, docs/deployment.md);
 //  - a participant without a certificate is never matched with the run's endpoints and cannot change it (it writes

@@ -1,4 +1,4 @@
-// Issue 11, item 1: scheduled faults (framework/faults, docs/faults.md). One paper scenario-#2 run (t = -50 .. 100 s)
+// Scheduled faults (framework/faults, docs/faults.md). One paper scenario-#2 run (t = -50 .. 100 s)
 // with every fault kind at its own time, in the direct and the distributed layouts: the recorded topics are
 // bit-identical, and each fault's effect is checked in the recorded samples. A scheduled kill of an essential member
 // ends the run at that step in both layouts.

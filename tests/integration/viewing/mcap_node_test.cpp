@@ -230,7 +230,7 @@ TEST(McapNode, OfficialReaderDecodesEveryMessageLikeGdnavsReader) {
     if (!::testing::Test::HasFailure()) fs::remove_all(out);
 }
 
-// Issue 16 item 2: the viewer channels (--record ...,viewer; common/io/viewer) of a scenario-#2 run that crosses the
+// The viewer channels (--record ...,viewer; common/io/viewer) of a scenario-#2 run that crosses the
 // GNSS loss (t = 100 s) are decoded by Foxglove's deserializer from the schemas in the file and compared, in
 // mcap_node/check_viewer.mjs, with the raw topics of the same file and with the run's run.h5 /error rows (the
 // nav_recorder's errors, written here as EXPECTED.json). gdnav's own reader skips the viewer channels.

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "config/config.hpp"
-#include "launch_test_util.hpp"
+#include "temp_dir.hpp"
 
 namespace gdnav::app {
 namespace {

@@ -4,7 +4,7 @@
 
 #include "config/config.hpp"
 #include "launch/batch/batch_dir.hpp"
-#include "launch_test_util.hpp"
+#include "temp_dir.hpp"
 #include "metrics/run_record.hpp"
 
 namespace gdnav::app {

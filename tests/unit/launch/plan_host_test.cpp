@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "config/config.hpp"
-#include "launch_test_util.hpp"
+#include "temp_dir.hpp"
 #include "paper_scenarios.hpp"
 
 namespace gdnav::runtime::deploy {

@@ -6,7 +6,7 @@
 
 #include "config/config.hpp"
 #include "framework/topic_types.hpp"
-#include "launch_test_util.hpp"
+#include "temp_dir.hpp"
 #include "paper_scenarios.hpp"
 
 namespace gdnav::app {

@@ -1,4 +1,4 @@
-// Issue 16 item 2: the viewer channels of a gdnav recording (components/viewer/viewer_channels.hpp) read with the
+// The viewer channels of a gdnav recording (components/viewer/viewer_channels.hpp) read with the
 // official TypeScript reader (@mcap/core, indexed, CRCs checked) and decoded by Foxglove's OMG IDL deserializer
 // (@foxglove/omgidl-parser + @foxglove/omgidl-serialization) from the schema text in the file, then compared with
 // values computed here, independently of gdnav's C++ code, from the raw topics of the same file (gdnav/Truth,

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "config/config.hpp"
-#include "flight_log_test_util.hpp"
+#include "temp_dir.hpp"
 
 namespace gdnav::app {
 namespace {

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "config/config.hpp"
-#include "flight_log_test_util.hpp"
+#include "temp_dir.hpp"
 #include "framework/topic_types.hpp"
 #include "io/flight_log/csv_table.hpp"
 #include "io/flight_log/log_export.hpp"
