@@ -65,6 +65,16 @@ def fmt(v, digits=2, signed=False):
     return f"{v:+.{digits}f}" if signed else f"{v:.{digits}f}"
 
 
+def time_axis(fig, t_gnss, t_end):
+    """The error plots' time axis spans the data from t = 0; a GNSS loss after the end is not drawn (it would stretch
+    the axis past the data)."""
+    if t_gnss <= t_end:
+        fig.add_vline(x=t_gnss, line=dict(color="black", dash="dot", width=1.2), row="all", col=1)
+        fig.add_annotation(x=t_gnss, y=1.0, yref="paper", xanchor="right", yanchor="bottom", showarrow=False,
+                           yshift=22, text="GNSS lost", font=dict(size=11))
+    fig.update_xaxes(range=[0.0, max(t_end, 1e-3)], row="all", col=1)
+
+
 def error_figure(t, err, t_gnss, faults, t_end):
     """Errors versus time, one row per group, GNSS loss and fault windows marked."""
     fig = make_subplots(rows=len(ERROR_ROWS), cols=1, shared_xaxes=True, vertical_spacing=0.04,
@@ -82,12 +92,7 @@ def error_figure(t, err, t_gnss, faults, t_end):
         fig.add_vrect(x0=a, x1=b, fillcolor="orange", opacity=0.18, line_width=0, row="all", col=1)
         fig.add_annotation(x=a, y=1.0, yref="paper", xanchor="left", yanchor="bottom", showarrow=False, yshift=22,
                            text="fault: " + esc(run_events.fault_label(f)), font=dict(size=10, color="#b35900"))
-    # The axis spans the data: a GNSS loss after the run's end is not drawn (it would stretch the axis past the data).
-    if t_gnss <= t_end:
-        fig.add_vline(x=t_gnss, line=dict(color="black", dash="dot", width=1.2), row="all", col=1)
-        fig.add_annotation(x=t_gnss, y=1.0, yref="paper", xanchor="right", yanchor="bottom", showarrow=False,
-                           yshift=22, text="GNSS lost", font=dict(size=11))
-    fig.update_xaxes(range=[0.0, max(t_end, 1e-3)], row="all", col=1)
+    time_axis(fig, t_gnss, t_end)
     fig.update_xaxes(title_text="t [s]", row=len(ERROR_ROWS), col=1)
     fig.update_layout(height=230 * len(ERROR_ROWS) + 80, margin=dict(l=60, r=20, t=80, b=40),
                       legend=dict(orientation="h", y=-0.06), hovermode="x unified")
@@ -225,12 +230,7 @@ def band_figure(stats, t_gnss):
                                      hoverinfo="skip"), row=row, col=1)
             fig.add_trace(go.Scatter(x=tt, y=rounded(mean, dec), mode="lines", line=dict(width=1.4, color=color),
                                      name=f"{label} mean [{unit}]", legendgroup=col), row=row, col=1)
-    # The axis spans the data: a GNSS loss after the run's end is not drawn (it would stretch the axis past the data).
-    if t_gnss <= t_end:
-        fig.add_vline(x=t_gnss, line=dict(color="black", dash="dot", width=1.2), row="all", col=1)
-        fig.add_annotation(x=t_gnss, y=1.0, yref="paper", xanchor="right", yanchor="bottom", showarrow=False,
-                           yshift=22, text="GNSS lost", font=dict(size=11))
-    fig.update_xaxes(range=[0.0, max(t_end, 1e-3)], row="all", col=1)
+    time_axis(fig, t_gnss, t_end)
     fig.update_xaxes(title_text="t [s]", row=len(ERROR_ROWS), col=1)
     fig.update_layout(height=230 * len(ERROR_ROWS) + 80, margin=dict(l=60, r=20, t=80, b=40),
                       legend=dict(orientation="h", y=-0.06))
