@@ -79,27 +79,11 @@ YAML::Node turn_op(double to_rad, const YAML::Node& until) {
     return op;
 }
 
-YAML::Node wind_yaml(const physics::WindRampParams& w) {
+// A drawn ramp as its section of the scenario file.
+template <class P, std::size_t N>
+YAML::Node ramp_yaml(const P& p, const std::array<config::NumberKey<P>, N>& keys) {
     YAML::Node n;
-    n["t_ini_s"] = number(w.t_ini_s);
-    n["t_end_s"] = number(w.t_end_s);
-    n["speed_ini_mps"] = number(w.speed_ini_mps);
-    n["bearing_ini_deg"] = degrees(w.bearing_ini_rad);
-    n["speed_end_mps"] = number(w.speed_end_mps);
-    n["bearing_end_deg"] = degrees(w.bearing_end_rad);
-    return n;
-}
-
-YAML::Node offsets_yaml(const atm::OffsetsRampParams& o) {
-    YAML::Node n;
-    n["dT_ini_K"] = number(o.dT_ini_K);
-    n["dT_end_K"] = number(o.dT_end_K);
-    n["t_ini_dT_s"] = number(o.t_ini_dT_s);
-    n["t_end_dT_s"] = number(o.t_end_dT_s);
-    n["dp_ini_Pa"] = number(o.dp_ini_Pa);
-    n["dp_end_Pa"] = number(o.dp_end_Pa);
-    n["t_ini_dp_s"] = number(o.t_ini_dp_s);
-    n["t_end_dp_s"] = number(o.t_end_dp_s);
+    for (const config::NumberKey<P>& k : keys) n[k.key] = k.degrees ? degrees(p.*k.field) : number(p.*k.field);
     return n;
 }
 
@@ -233,8 +217,8 @@ GeneratedScenario generate_paper_scenario(int scenario, const YAML::Node& doc_in
             i["bearing_deg"] = degrees(d.mission.common.bearing_ini_rad);
             drawn["initial"] = i;
         }
-        drawn["wind"] = wind_yaml(d.wind);
-        drawn["offsets"] = offsets_yaml(d.offsets);
+        drawn["wind"] = ramp_yaml(d.wind, physics::kWindRampKeys);
+        drawn["offsets"] = ramp_yaml(d.offsets, atm::kOffsetsRampKeys);
         drawn["earth_truth"] = earth_yaml(d.earth);
         fill_missing(comps[name], drawn, "components." + name, &g.kept);
     }

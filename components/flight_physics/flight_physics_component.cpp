@@ -17,30 +17,6 @@ namespace {
 
 using runtime::to_array;
 
-WindRampParams parse_wind(const Config& c) {
-    WindRampParams w;
-    w.t_ini_s = c.get_double("t_ini_s", {-1e6, 1e7});
-    w.t_end_s = c.get_double("t_end_s", {w.t_ini_s, 1e7});
-    w.speed_ini_mps = c.get_double("speed_ini_mps", {0.0, 60.0});
-    w.bearing_ini_rad = c.get_angle_deg("bearing_ini_deg", {-360.0, 360.0});
-    w.speed_end_mps = c.get_double("speed_end_mps", {0.0, 60.0});
-    w.bearing_end_rad = c.get_angle_deg("bearing_end_deg", {-360.0, 360.0});
-    return w;
-}
-
-atm::OffsetsRampParams parse_offsets(const Config& c) {
-    atm::OffsetsRampParams o;
-    o.dT_ini_K = c.get_double("dT_ini_K", {-60.0, 60.0});
-    o.dT_end_K = c.get_double("dT_end_K", {-60.0, 60.0});
-    o.t_ini_dT_s = c.get_double("t_ini_dT_s", {-1e6, 1e7});
-    o.t_end_dT_s = c.get_double("t_end_dT_s", {o.t_ini_dT_s, 1e7});
-    o.dp_ini_Pa = c.get_double("dp_ini_Pa", {-10000.0, 10000.0});
-    o.dp_end_Pa = c.get_double("dp_end_Pa", {-10000.0, 10000.0});
-    o.t_ini_dp_s = c.get_double("t_ini_dp_s", {-1e6, 1e7});
-    o.t_end_dp_s = c.get_double("t_end_dp_s", {o.t_ini_dp_s, 1e7});
-    return o;
-}
-
 earth::EarthTruthParams parse_earth(const Config& c) {
     earth::EarthTruthParams e;
     e.dg_mps2 = c.get_double("dg_mps2", {-0.01, 0.01});
@@ -67,11 +43,11 @@ public:
         const std::string draw = cfg.get_choice("draw", "none", {"none", "scenario1", "scenario2"});
         rnd::Stream draws = stream.child("environment");
         if (auto w = cfg.optional_child("wind"))
-            env.wind = parse_wind(*w);
+            env.wind = config::read_number_keys(*w, kWindRampKeys);
         else if (draw != "none")
             env.wind = draw == "scenario1" ? draw_wind_scenario1(draws) : draw_wind_scenario2(draws);
         if (auto o = cfg.optional_child("offsets"))
-            env.offsets = parse_offsets(*o);
+            env.offsets = config::read_number_keys(*o, atm::kOffsetsRampKeys);
         else if (draw != "none")
             env.offsets = draw == "scenario1" ? atm::draw_offsets_scenario1(draws) : atm::draw_offsets_scenario2(draws);
         if (auto e = cfg.optional_child("earth_truth"))

@@ -3,14 +3,15 @@
 // Each offset is constant before its own t_ini, linear between t_ini and t_end, and constant after t_end; the two
 // offsets have independent ramp times. No spatial dependence.
 //
-// Stochastic definition (reference section 2.1), draws in this order, N ~ N(0, 1):
-//   1. t_ini_T = t_ini_mean + s_t N, redrawn until >= t_min          2. t_ini_p: same, independently
-//   3. t_end_T = t_ini_T + dt_mean + s_t N, redrawn until >= t_ini_T + s_t     4. t_end_p: same, from t_ini_p
+// Stochastic definition (reference section 2.1), draws in this order, N ~ N(0, 1), ramp times as in
+// random/ramp_times.hpp with min_gap = s_t:
+//   1. t_ini_T       2. t_ini_p: same, independently       3. t_end_T from t_ini_T       4. t_end_p from t_ini_p
 //   5. dT_ini = s_dT0 N   6. dp_ini = s_dp0 N   7. dT_end = dT_ini + s_dTjump N   8. dp_end = dp_ini + s_dpjump N
 // Scenario #1 ("offsets_id02"): t_ini_mean 400 s, dt_mean 1200 s, s_t 600 s, t_min 50 s, s_dT0 10 K,
 //   s_dTjump 3 K, s_dp0 1500 Pa, s_dpjump 300 Pa. Scenario #2 ("offsets_id03"): same with zero jumps (constant
 //   offsets; the ramp times and jump normals are still drawn so both scenarios share dT_ini, dp_ini for one stream).
-#include "random/stream.hpp"
+#include "config/number_keys.hpp"
+#include "random/ramp_times.hpp"
 
 namespace gdnav::atm {
 
@@ -25,11 +26,20 @@ struct OffsetsRampParams {
     double t_end_dp_s{0.0};
 };
 
+// The keys of a scenario's `offsets:` section: flight_physics reads them, the paper scenarios write a drawn ramp.
+inline constexpr std::array<config::NumberKey<OffsetsRampParams>, 8> kOffsetsRampKeys{{
+    {"dT_ini_K", &OffsetsRampParams::dT_ini_K, false, {-60.0, 60.0}},
+    {"dT_end_K", &OffsetsRampParams::dT_end_K, false, {-60.0, 60.0}},
+    {"t_ini_dT_s", &OffsetsRampParams::t_ini_dT_s, false, {-1e6, 1e7}},
+    {"t_end_dT_s", &OffsetsRampParams::t_end_dT_s, false, {-1e6, 1e7}, &OffsetsRampParams::t_ini_dT_s},
+    {"dp_ini_Pa", &OffsetsRampParams::dp_ini_Pa, false, {-10000.0, 10000.0}},
+    {"dp_end_Pa", &OffsetsRampParams::dp_end_Pa, false, {-10000.0, 10000.0}},
+    {"t_ini_dp_s", &OffsetsRampParams::t_ini_dp_s, false, {-1e6, 1e7}},
+    {"t_end_dp_s", &OffsetsRampParams::t_end_dp_s, false, {-1e6, 1e7}, &OffsetsRampParams::t_ini_dp_s},
+}};
+
 struct OffsetsRampSpec {
-    double t_ini_mean_s{400.0};
-    double dt_mean_s{1200.0};
-    double sigma_t_s{600.0};
-    double t_min_s{50.0};
+    rnd::RampTimesSpec times;
     double sigma_dT0_K{10.0};
     double sigma_dT_jump_K{3.0};
     double sigma_dp0_Pa{1500.0};

@@ -6,16 +6,12 @@
 namespace gdnav::physics {
 
 WindRampParams draw_wind_ramp(rnd::Stream& s, const WindRampSpec& spec) {
-    if (!(spec.sigma_t_s > 0.0) || !(spec.dt_mean_s >= 0.0) || spec.sigma_speed0_mps < 0.0 ||
-        spec.sigma_speed_jump_mps < 0.0 || spec.sigma_bearing_jump_rad < 0.0)
+    if (!spec.times.valid() || spec.sigma_speed0_mps < 0.0 || spec.sigma_speed_jump_mps < 0.0 ||
+        spec.sigma_bearing_jump_rad < 0.0)
         throw std::invalid_argument("draw_wind_ramp: sigmas must be >= 0 (sigma_t > 0) and dt_mean >= 0");
     WindRampParams p;
-    do {
-        p.t_ini_s = spec.t_ini_mean_s + spec.sigma_t_s * s.normal();
-    } while (p.t_ini_s < spec.t_min_s);
-    do {
-        p.t_end_s = p.t_ini_s + spec.dt_mean_s + spec.sigma_t_s * s.normal();
-    } while (p.t_end_s < p.t_ini_s + 0.5 * spec.sigma_t_s);
+    p.t_ini_s = spec.times.draw_start_s(s);
+    p.t_end_s = spec.times.draw_end_s(s, p.t_ini_s, 0.5 * spec.times.sigma_t_s);
     p.speed_ini_mps = std::abs(spec.sigma_speed0_mps * s.normal());
     p.bearing_ini_rad = math::deg2rad(static_cast<double>(s.uniform_int(-179, 180)));
     p.speed_end_mps = p.speed_ini_mps + spec.sigma_speed_jump_mps * s.normal();
