@@ -58,23 +58,44 @@ std::optional<InitMode> init_override(const config::Config& cfg) {
                                                                                       : InitMode::kMeasurements;
 }
 
-// Configures a filter that has a variant (attitude, position) from its sections of both files, then applies the
-// component's `init_mode` override, if any.
+// A nav component around one filter; its rejections are by default the filter's and those before initialisation.
 template <class Filter>
-void configure_with_variant(Filter& filter, const NavFiles& files, const char* section, const config::Config& cfg,
-                            rnd::Stream& stream) {
-    filter.configure(files.tuning.child(section), files.variant.child(section), stream.child("filter"));
-    if (auto m = init_override(cfg)) {
-        typename Filter::Tuning t = filter.tuning();
-        t.init_mode = *m;
-        filter.configure(t, stream.child("filter"));
-    }
-}
-
-// ------------------------------------------------------------------------------------------------ nav_air
-class NavAir final : public RejectionReporting {
+class FilterComponent : public RejectionReporting {
 public:
     using RejectionReporting::RejectionReporting;
+
+protected:
+    [[nodiscard]] std::uint64_t total() const override {
+        return filter_.rejections().total() + rejected_before_init();
+    }
+
+    Filter filter_;
+};
+
+// nav_att and nav_pos: a filter that has a variant, configured from its `Section` of both nav files, then with the
+// component's `init_mode` override, if any.
+template <class Filter, const char* Section>
+class VariantFilterComponent : public FilterComponent<Filter> {
+public:
+    using FilterComponent<Filter>::FilterComponent;
+    void configure(const config::Config& cfg, const runtime::RunInfo&, rnd::Stream& stream) override {
+        const NavFiles files = load_nav_files(cfg, true);
+        this->filter_.configure(files.tuning.child(Section), files.variant.child(Section), stream.child("filter"));
+        if (auto m = init_override(cfg)) {
+            typename Filter::Tuning t = this->filter_.tuning();
+            t.init_mode = *m;
+            this->filter_.configure(t, stream.child("filter"));
+        }
+    }
+};
+
+constexpr char kAttitudeSection[] = "attitude";
+constexpr char kPositionSection[] = "position";
+
+// ------------------------------------------------------------------------------------------------ nav_air
+class NavAir final : public FilterComponent<AirDataFilter> {
+public:
+    using FilterComponent::FilterComponent;
     void configure(const config::Config& cfg, const runtime::RunInfo&, rnd::Stream& stream) override {
         const NavFiles files = load_nav_files(cfg, false);
         filter_.configure(files.tuning.child("air"), stream);
@@ -94,9 +115,6 @@ public:
     }
 
 private:
-    [[nodiscard]] std::uint64_t total() const override {
-        return filter_.rejections().total() + rejected_before_init();
-    }
     [[nodiscard]] std::string count_details() const override {
         const auto& r = filter_.rejections();
         return fmt::format("AirSample {}, AtmSample {}, before initialisation {} (total {})", r.air, r.atm,
@@ -106,16 +124,12 @@ private:
     Input<msg::AirSample> air_{*this, topics::kAir};
     Input<msg::AtmSample> atm_{*this, topics::kAtm};
     Output<msg::AirDataEstimate> out_{*this, topics::kAirData};
-    AirDataFilter filter_;
 };
 
 // ------------------------------------------------------------------------------------------------ nav_att
-class NavAtt final : public RejectionReporting {
+class NavAtt final : public VariantFilterComponent<AttitudeFilter, kAttitudeSection> {
 public:
-    using RejectionReporting::RejectionReporting;
-    void configure(const config::Config& cfg, const runtime::RunInfo&, rnd::Stream& stream) override {
-        configure_with_variant(filter_, load_nav_files(cfg, true), "attitude", cfg, stream);
-    }
+    using VariantFilterComponent::VariantFilterComponent;
     void step(const runtime::StepContext& ctx) override {
         if (!imu_.available() || !mag_.available()) return;
         const ImuSample imu = from_msg(imu_.get());
@@ -139,9 +153,6 @@ public:
     }
 
 private:
-    [[nodiscard]] std::uint64_t total() const override {
-        return filter_.rejections().total() + rejected_before_init();
-    }
     [[nodiscard]] std::string count_details() const override {
         const auto& r = filter_.rejections();
         return fmt::format("ImuSample {}, MagSample {}, PositionEstimate (p_n) {}, before initialisation {} (total {})",
@@ -154,17 +165,13 @@ private:
     Input<msg::GnssSample> gnss_{*this, topics::kGnss};
     Input<msg::PositionEstimate> pos_prev_{*this, topics::kPosition, Lag::Previous};
     Output<msg::AttitudeEstimate> out_{*this, topics::kAttitude};
-    AttitudeFilter filter_;
     PositionEstimate last_pos_;
 };
 
 // ------------------------------------------------------------------------------------------------ nav_pos
-class NavPos final : public RejectionReporting {
+class NavPos final : public VariantFilterComponent<PositionFilter, kPositionSection> {
 public:
-    using RejectionReporting::RejectionReporting;
-    void configure(const config::Config& cfg, const runtime::RunInfo&, rnd::Stream& stream) override {
-        configure_with_variant(filter_, load_nav_files(cfg, true), "position", cfg, stream);
-    }
+    using VariantFilterComponent::VariantFilterComponent;
     void step(const runtime::StepContext& ctx) override {
         if (!imu_.available() || !air_.available() || !att_.available()) return;
         GnssSample gnss;  // fix_valid false unless a sample is there
@@ -233,10 +240,6 @@ public:
     }
 
 private:
-    [[nodiscard]] std::uint64_t total() const override {
-        const auto& r = filter_.rejections();
-        return r.inputs() + r.gnss_gate + r.gnss_reacquire + rejected_before_init();
-    }
     [[nodiscard]] std::string count_details() const override {
         const auto& r = filter_.rejections();
         return fmt::format(
@@ -254,7 +257,6 @@ private:
     Input<msg::AirDataEstimate> air_{*this, topics::kAirData};
     Input<msg::AttitudeEstimate> att_{*this, topics::kAttitude};
     Output<msg::PositionEstimate> out_{*this, topics::kPosition};
-    PositionFilter filter_;
     bool publisher_dead_{false};
 };
 

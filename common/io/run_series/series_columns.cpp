@@ -16,6 +16,22 @@ void offsets(double lat, double lon, double h, const Origin& o, double& north, d
     north = (lat - o.lat_rad) * (o.radii.m_m + h);
     east = math::wrap_pi(lon - o.lon_rad) * (o.radii.n_m + h) * std::cos(lat);
 }
+
+// The navigation state from the messages that carry its parts (the truth carries all of them).
+template <class Air, class Att, class Pos>
+metrics::NavState nav_state(const Air& a, const Att& q, const Pos& p) {
+    metrics::NavState s;
+    s.lat_rad = p.lat_rad();
+    s.lon_rad = p.lon_rad();
+    s.h_m = p.h_m();
+    s.v_n_mps = runtime::to_vec3(p.v_n_mps());
+    s.q_nb = runtime::to_quat(q.q_nb());
+    s.tas_mps = a.tas_mps();
+    s.aoa_rad = a.aoa_rad();
+    s.aos_rad = a.aos_rad();
+    s.dT_K = a.dT_K();
+    return s;
+}
 }  // namespace
 
 std::vector<std::string> truth_columns() {
@@ -37,33 +53,11 @@ std::vector<std::string> error_columns() {
 
 std::vector<std::string> gnss_columns() { return {"t_s", "lat_rad", "lon_rad", "h_m", "vn_mps", "ve_mps", "vd_mps"}; }
 
-metrics::NavState truth_state(const msg::Truth& t) {
-    metrics::NavState s;
-    s.lat_rad = t.lat_rad();
-    s.lon_rad = t.lon_rad();
-    s.h_m = t.h_m();
-    s.v_n_mps = runtime::to_vec3(t.v_n_mps());
-    s.q_nb = runtime::to_quat(t.q_nb());
-    s.tas_mps = t.tas_mps();
-    s.aoa_rad = t.aoa_rad();
-    s.aos_rad = t.aos_rad();
-    s.dT_K = t.dT_K();
-    return s;
-}
+metrics::NavState truth_state(const msg::Truth& t) { return nav_state(t, t, t); }
 
 metrics::NavState estimate_state(const msg::AirDataEstimate& a, const msg::AttitudeEstimate& q,
                                  const msg::PositionEstimate& p) {
-    metrics::NavState s;
-    s.lat_rad = p.lat_rad();
-    s.lon_rad = p.lon_rad();
-    s.h_m = p.h_m();
-    s.v_n_mps = runtime::to_vec3(p.v_n_mps());
-    s.q_nb = runtime::to_quat(q.q_nb());
-    s.tas_mps = a.tas_mps();
-    s.aoa_rad = a.aoa_rad();
-    s.aos_rad = a.aos_rad();
-    s.dT_K = a.dT_K();
-    return s;
+    return nav_state(a, q, p);
 }
 
 void fill_truth_row(double* r, double t_s, const msg::Truth& t, const Origin& o, double dist_m) {

@@ -32,6 +32,16 @@ std::string read_text(const fs::path& p) {
     return ss.str();
 }
 
+// Inserts `text` into the profile `xml` of `plan` right after `anchor`, or before it; a profile without the anchor is
+// a configuration error naming the section the plan needs.
+void insert_at(std::string& xml, const Plan& plan, const std::string& anchor, bool after, const std::string& text,
+               const std::string& what) {
+    const auto at = xml.find(anchor);
+    if (at == std::string::npos)
+        throw ConfigError("config error: " + plan.dds_profile.string() + ": no participant " + what);
+    xml.insert(after ? at + anchor.size() : at, text);
+}
+
 }  // namespace
 
 Plan Plan::load(const fs::path& file) {
@@ -144,12 +154,8 @@ std::string plan_profile_xml(const Plan& plan) {
         for (const auto& h : plan.hosts)
             add << "            <locator><udpv4><address>" << h.address << "</address></udpv4></locator>\n";
         add << "          </initialPeersList>\n";
-        const std::string anchor = "        </builtin>";
-        const auto at = xml.find(anchor);
-        if (at == std::string::npos)
-            throw ConfigError("config error: " + plan.dds_profile.string() +
-                              ": no participant <builtin> section to add the plan's initial peers to");
-        xml.insert(at, add.str());
+        insert_at(xml, plan, "        </builtin>", false, add.str(),
+                  "<builtin> section to add the plan's initial peers to");
         return xml;
     }
     add << "\n            <discoveryProtocol>CLIENT</discoveryProtocol>\n            <discoveryServersList>\n";
@@ -162,12 +168,8 @@ std::string plan_profile_xml(const Plan& plan) {
         ++id;
     }
     add << "            </discoveryServersList>";
-    const std::string anchor = "<discovery_config>";
-    const auto at = xml.find(anchor);
-    if (at == std::string::npos)
-        throw ConfigError("config error: " + plan.dds_profile.string() +
-                          ": no participant <discovery_config> section to add the plan's discovery servers to");
-    xml.insert(at + anchor.size(), add.str());
+    insert_at(xml, plan, "<discovery_config>", true, add.str(),
+              "<discovery_config> section to add the plan's discovery servers to");
     return xml;
 }
 

@@ -41,41 +41,48 @@ E read_mode(const Config& ch) {
     return *gnc::mode_from_name<E>(ch.get_choice("mode", names_of<E>()));
 }
 
-void read_throttle(const Config& ch, MissionBuilder& b) {
-    const auto mode = read_mode<gnc::ThrottleMode>(ch);
-    b.set_throttle(mode, ch.get_double("airspeed_mps", kAirspeed_mps));
-}
+// The target key of each mode of a channel (angles in degrees in the file).
+template <class E>
+struct ModeTarget {
+    E mode;
+    const char* key;
+    bool degrees;
+    Range range;
+};
 
-void read_elevator(const Config& ch, MissionBuilder& b) {
-    using M = gnc::ElevatorMode;
-    const auto mode = read_mode<M>(ch);
-    double target = 0.0;
-    switch (mode) {
-        case M::pitch: target = ch.get_angle_deg("pitch_deg", kPitch_deg); break;
-        case M::pressure_altitude: target = ch.get_double("pressure_altitude_m", kAltitude_m); break;
-        case M::altitude: target = ch.get_double("altitude_m", kAltitude_m); break;
-        case M::air_path_angle: target = ch.get_angle_deg("air_path_angle_deg", kPathAngle_deg); break;
-    }
-    b.set_elevator(mode, target);
-}
+using gnc::AileronMode;
+using gnc::ElevatorMode;
+constexpr ModeTarget<gnc::ThrottleMode> kThrottleTargets[] = {
+    {gnc::ThrottleMode::airspeed, "airspeed_mps", false, kAirspeed_mps}};
+constexpr ModeTarget<ElevatorMode> kElevatorTargets[] = {
+    {ElevatorMode::pitch, "pitch_deg", true, kPitch_deg},
+    {ElevatorMode::pressure_altitude, "pressure_altitude_m", false, kAltitude_m},
+    {ElevatorMode::altitude, "altitude_m", false, kAltitude_m},
+    {ElevatorMode::air_path_angle, "air_path_angle_deg", true, kPathAngle_deg}};
+constexpr ModeTarget<AileronMode> kAileronTargets[] = {
+    {AileronMode::bank, "bank_deg", true, kBank_deg},
+    {AileronMode::bearing, "bearing_deg", true, kBearing_deg},
+    {AileronMode::heading, "heading_deg", true, kBearing_deg},
+    {AileronMode::air_bank, "air_bank_deg", true, kBank_deg},
+    {AileronMode::air_bearing, "air_bearing_deg", true, kBearing_deg}};
+constexpr ModeTarget<gnc::RudderMode> kRudderTargets[] = {
+    {gnc::RudderMode::sideslip, "sideslip_deg", true, kSideslip_deg}};
 
-void read_aileron(const Config& ch, MissionBuilder& b) {
-    using M = gnc::AileronMode;
-    const auto mode = read_mode<M>(ch);
-    double target = 0.0;
-    switch (mode) {
-        case M::bank: target = ch.get_angle_deg("bank_deg", kBank_deg); break;
-        case M::bearing: target = ch.get_angle_deg("bearing_deg", kBearing_deg); break;
-        case M::heading: target = ch.get_angle_deg("heading_deg", kBearing_deg); break;
-        case M::air_bank: target = ch.get_angle_deg("air_bank_deg", kBank_deg); break;
-        case M::air_bearing: target = ch.get_angle_deg("air_bearing_deg", kBearing_deg); break;
-    }
-    b.set_aileron(mode, target);
-}
+void set(MissionBuilder& b, gnc::ThrottleMode m, double target) { b.set_throttle(m, target); }
+void set(MissionBuilder& b, ElevatorMode m, double target) { b.set_elevator(m, target); }
+void set(MissionBuilder& b, AileronMode m, double target) { b.set_aileron(m, target); }
+void set(MissionBuilder& b, gnc::RudderMode m, double target) { b.set_rudder(m, target); }
 
-void read_rudder(const Config& ch, MissionBuilder& b) {
-    const auto mode = read_mode<gnc::RudderMode>(ch);
-    b.set_rudder(mode, ch.get_angle_deg("sideslip_deg", kSideslip_deg));
+// A channel's mode and the target its mode reads.
+template <class E, std::size_t N>
+void read_channel(const Config& ch, const ModeTarget<E> (&targets)[N], MissionBuilder& b) {
+    const E mode = read_mode<E>(ch);
+    for (const ModeTarget<E>& t : targets)
+        if (t.mode == mode) {
+            set(b, mode, t.degrees ? ch.get_angle_deg(t.key, t.range) : ch.get_double(t.key, t.range));
+            return;
+        }
+    throw std::logic_error("mission: a mode without a target key");
 }
 
 Trigger read_trigger(const Config& op) {
@@ -96,10 +103,10 @@ Trigger read_trigger(const Config& op) {
 // Channels of a `hold`: all four are required in the first operation, any subset afterwards.
 void read_channels(const Config& op, MissionBuilder& b, bool all_required) {
     auto get = [&](const char* key) { return all_required ? std::optional<Config>(op.child(key)) : op.optional_child(key); };
-    if (auto ch = get("throttle")) read_throttle(*ch, b);
-    if (auto ch = get("elevator")) read_elevator(*ch, b);
-    if (auto ch = get("aileron")) read_aileron(*ch, b);
-    if (auto ch = get("rudder")) read_rudder(*ch, b);
+    if (auto ch = get("throttle")) read_channel(*ch, kThrottleTargets, b);
+    if (auto ch = get("elevator")) read_channel(*ch, kElevatorTargets, b);
+    if (auto ch = get("aileron")) read_channel(*ch, kAileronTargets, b);
+    if (auto ch = get("rudder")) read_channel(*ch, kRudderTargets, b);
 }
 
 void read_turn(const Config& op, MissionBuilder& b) {

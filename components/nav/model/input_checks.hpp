@@ -25,45 +25,50 @@
 
 namespace gdnav::nav::checks {
 
+struct Range {
+    double lo, hi;
+};
+
+constexpr double kPi = 3.141592653589793;
 constexpr double kMaxSpecificForce_mps2 = 500.0;
 constexpr double kMaxRate_rps = 35.0;
 constexpr double kMaxMagField_nT = 5.0e5;
-constexpr double kMinTas_mps = -20.0;
-constexpr double kMaxTas_mps = 350.0;
-constexpr double kMaxVaneAngle_rad = 1.5707963267948966;
-constexpr double kMinPressure_Pa = 1.0e3;
-constexpr double kMaxPressure_Pa = 1.2e5;
-constexpr double kMinTemperature_K = 150.0;
-constexpr double kMaxTemperature_K = 350.0;
-constexpr double kMinHeight_m = -1000.0;
-constexpr double kMaxHeight_m = 1.0e5;
 constexpr double kMaxGnssSpeed_mps = 500.0;
+constexpr Range kTas_mps{-20.0, 350.0};
+constexpr Range kVaneAngle_rad{-0.5 * kPi, 0.5 * kPi};
+constexpr Range kPressure_Pa{1.0e3, 1.2e5};
+constexpr Range kTemperature_K{150.0, 350.0};
+constexpr Range kLat_rad{-0.5 * kPi, 0.5 * kPi};
+constexpr Range kLon_rad{-2.0 * kPi, 2.0 * kPi};
+constexpr Range kHeight_m{-1000.0, 1.0e5};
 
-inline bool within(double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; }
+inline bool within(double v, Range r) { return std::isfinite(v) && v >= r.lo && v <= r.hi; }
 inline bool within_abs(const Vec3& v, double hi) { return v.allFinite() && v.cwiseAbs().maxCoeff() <= hi; }
+
+// Airspeed and vane angles: of an AirSample and of an AirDataEstimate.
+template <class Air>
+bool air_angles_ok(const Air& a) {
+    return within(a.tas_mps, kTas_mps) && within(a.aoa_rad, kVaneAngle_rad) && within(a.aos_rad, kVaneAngle_rad);
+}
+// Position and velocity: of a GNSS fix and of a PositionEstimate.
+template <class Pos>
+bool position_ok(const Pos& p) {
+    return within(p.lat_rad, kLat_rad) && within(p.lon_rad, kLon_rad) && within(p.h_m, kHeight_m) &&
+           within_abs(p.v_n_mps, kMaxGnssSpeed_mps);
+}
 
 inline bool imu_ok(const ImuSample& s) {
     return within_abs(s.f_b_mps2, kMaxSpecificForce_mps2) && within_abs(s.w_b_rps, kMaxRate_rps);
 }
 inline bool mag_ok(const MagSample& s) { return within_abs(s.b_b_nT, kMaxMagField_nT); }
-inline bool air_ok(const AirSample& s) {
-    return within(s.tas_mps, kMinTas_mps, kMaxTas_mps) && within(s.aoa_rad, -kMaxVaneAngle_rad, kMaxVaneAngle_rad) &&
-           within(s.aos_rad, -kMaxVaneAngle_rad, kMaxVaneAngle_rad);
-}
-inline bool atm_ok(const AtmSample& s) {
-    return within(s.p_Pa, kMinPressure_Pa, kMaxPressure_Pa) && within(s.T_K, kMinTemperature_K, kMaxTemperature_K);
-}
+inline bool air_ok(const AirSample& s) { return air_angles_ok(s); }
+inline bool atm_ok(const AtmSample& s) { return within(s.p_Pa, kPressure_Pa) && within(s.T_K, kTemperature_K); }
 // Position and velocity of a fix (the caller checks fix_valid: a sample without a fix is not a rejection).
-inline bool gnss_fix_ok(const GnssSample& s) {
-    constexpr double kPi = 3.141592653589793;
-    return within(s.lat_rad, -0.5 * kPi, 0.5 * kPi) && within(s.lon_rad, -2.0 * kPi, 2.0 * kPi) &&
-           within(s.h_m, kMinHeight_m, kMaxHeight_m) && within_abs(s.v_n_mps, kMaxGnssSpeed_mps);
-}
+inline bool gnss_fix_ok(const GnssSample& s) { return position_ok(s); }
 inline bool air_estimate_ok(const AirDataEstimate& e) {
-    return within(e.tas_mps, kMinTas_mps, kMaxTas_mps) && within(e.aoa_rad, -kMaxVaneAngle_rad, kMaxVaneAngle_rad) &&
-           within(e.aos_rad, -kMaxVaneAngle_rad, kMaxVaneAngle_rad) && std::isfinite(e.Hp_m) &&
-           std::isfinite(e.dT_K) && std::isfinite(e.T_K) && std::isfinite(e.roc_mps) &&
-           std::isfinite(e.tas_dot_mps2) && std::isfinite(e.aoa_dot_rps) && std::isfinite(e.aos_dot_rps);
+    return air_angles_ok(e) && std::isfinite(e.Hp_m) && std::isfinite(e.dT_K) && std::isfinite(e.T_K) &&
+           std::isfinite(e.roc_mps) && std::isfinite(e.tas_dot_mps2) && std::isfinite(e.aoa_dot_rps) &&
+           std::isfinite(e.aos_dot_rps);
 }
 inline bool attitude_estimate_ok(const AttitudeEstimate& e) {
     const double n = e.q_nb.coeffs().norm();
@@ -71,10 +76,8 @@ inline bool attitude_estimate_ok(const AttitudeEstimate& e) {
 }
 // The fields of the previous PositionEstimate the attitude filter takes p_n from.
 inline bool position_estimate_ok(const PositionEstimate& e) {
-    constexpr double kPi = 3.141592653589793;
-    return within(e.lat_rad, -0.5 * kPi, 0.5 * kPi) && within(e.lon_rad, -2.0 * kPi, 2.0 * kPi) &&
-           within(e.h_m, kMinHeight_m, kMaxHeight_m) && within_abs(e.v_n_mps, kMaxGnssSpeed_mps) &&
-           within_abs(e.wind_n_mps, kMaxGnssSpeed_mps) && within_abs(e.acc_err_b_mps2, kMaxSpecificForce_mps2);
+    return position_ok(e) && within_abs(e.wind_n_mps, kMaxGnssSpeed_mps) &&
+           within_abs(e.acc_err_b_mps2, kMaxSpecificForce_mps2);
 }
 
 }  // namespace gdnav::nav::checks

@@ -93,7 +93,9 @@ public:
         std::uint64_t gnss_gate{0};       // fixes rejected by the chi-square gate (aided phase)
         std::uint64_t gnss_reacquire{0};  // fixes refused for re-acquisition (denied phase: too far from the dead-
                                           // reckoned position, or inconsistent with the previous fix)
-        [[nodiscard]] std::uint64_t inputs() const { return imu + gnss_invalid + air + attitude; }
+        [[nodiscard]] std::uint64_t total() const {
+            return imu + gnss_invalid + air + attitude + gnss_gate + gnss_reacquire;
+        }
     };
 
     // tuning: `position` section of config/nav/tuning.yaml; variant: `position` section of a variant file.
