@@ -67,9 +67,6 @@ public:
         if (reference != "truth" && reference != "none")
             cfg.fail("reference", "'" + reference + "' is not one of truth, none");
         reference_ = reference == "truth";
-        if (!reference_)
-            spdlog::warn("nav_recorder: reference: none (no recorded Truth drives the physics): no error metrics, "
-                         "only the estimates are recorded (docs/replay.md)");
         if (cfg.get_bool("gnss_track", true))
             gnss_ = std::make_unique<runtime::Input<msg::GnssSample>>(*this, topics::kGnss);
         dir_ = run.out_dir;
@@ -169,6 +166,10 @@ private:
 
     void start(const msg::Truth& t) {
         started_ = true;
+        // Said once, at the run's first step (configure also runs when a run is only checked).
+        if (!reference_)
+            spdlog::warn("nav_recorder: reference: none (no recorded Truth drives the physics): no error metrics, "
+                         "only the estimates are recorded (docs/replay.md)");
         origin_.lat_rad = t.lat_rad();
         origin_.lon_rad = t.lon_rad();
         origin_.radii = earth::radii(t.lat_rad());

@@ -107,7 +107,7 @@ def error_figure(t, err, t_gnss, faults, t_end, t_stop=None):
 def track_figure(truth, est, t_gnss):
     """Horizontal track (north/east from the initial true position), true and estimated, GNSS loss and ends marked."""
     fig = go.Figure()
-    step = stride_for(len(truth["t"]))
+    step = stride_for(len((truth or est)["t"]))
     for name, d, color in (("true", truth, "black"), ("estimated", est, "#d62728")):
         if d is None:  # no reference trajectory
             continue
@@ -116,8 +116,10 @@ def track_figure(truth, est, t_gnss):
                                  line=dict(color=color, width=1.5), text=rounded(d["t"][::step], 1),
                                  hovertemplate="t = %{text} s<br>E %{x} km, N %{y} km"))
         i = int(np.searchsorted(d["t"], t_gnss))
-        for j, what, symbol in ((i, f"{name}: GNSS lost (t = {t_gnss:g} s)", "x"), (-1, f"{name}: end", "circle")):
-            if 0 <= j < len(d["t"]) or j == -1:
+        finite = np.flatnonzero(np.isfinite(d["east_m"]))  # an estimator that stopped ends its track early
+        last = int(finite[-1]) if len(finite) else -1
+        for j, what, symbol in ((i, f"{name}: GNSS lost (t = {t_gnss:g} s)", "x"), (last, f"{name}: end", "circle")):
+            if 0 <= j < len(d["t"]):
                 fig.add_trace(go.Scatter(x=[float(d["east_m"][j]) / 1000.0], y=[float(d["north_m"][j]) / 1000.0],
                                          mode="markers", name=what, marker=dict(color=color, symbol=symbol, size=10)))
     fig.update_layout(title="Horizontal track (from the initial true position)", height=620,
