@@ -2,6 +2,7 @@
 
 Shared by report.py (PNG figures) and review.py (HTML flight review pages). Debian's python3-yaml, -numpy, -h5py.
 """
+import csv
 import math
 import os
 
@@ -54,6 +55,16 @@ def stopped_note(rec):
             if not math.isfinite(v) or v < latest]
     t_end = float(rec.get("t_end_s", float("nan")))
     return f"estimator stopped ({', '.join(gone) or f'all at t = {latest:.2f} s'}): figures over [0, {t_end:.2f}] s"
+
+
+def read_runs_csv(path):
+    """Rows of runs.csv by run index; `distance` is what the run's final % divides by (up to t_end when an
+    estimator stopped; runs.csv of an older gdnav has no distance_at_t_end_m)."""
+    with open(path, newline="") as f:
+        rows = {int(r["run_index"]): {k: float(v) for k, v in r.items()} for r in csv.DictReader(f)}
+    for v in rows.values():
+        v["distance"] = v.get("distance_at_t_end_m", v["distance_since_gnss_m"])
+    return rows
 
 
 def batch_label(batch):

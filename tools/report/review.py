@@ -18,7 +18,6 @@ bands add the runs in run order whatever the number of workers, so the pages do 
 Each page embeds plotly.js (review_page.py) and opens offline. Needs Debian's python3-plotly, -numpy, -h5py, -yaml.
 """
 import argparse
-import csv
 import math
 import multiprocessing
 import os
@@ -37,7 +36,8 @@ import numpy as np  # noqa: E402
 import yaml  # noqa: E402
 
 import run_events  # noqa: E402
-from batch_runs import DEG, Streamed, batch_label, final_distance, load_runs, read_table, signal, stopped_note  # noqa: E402,E501
+from batch_runs import (DEG, Streamed, batch_label, final_distance, load_runs, read_runs_csv, read_table,  # noqa: E402
+                        signal, stopped_note)
 from review_page import Page, esc, markdown_html, rounded, stride_for  # noqa: E402
 
 # Error rows of the run and batch pages: (title, [(column of /error, label, scale, decimals)], unit)
@@ -231,16 +231,6 @@ def run_page(run_dir, h5, metrics, path, title, back=None):
     page.table(["t [s]", "source", "event"], rows, right={0})
     page.write(path)
     return t, err
-
-
-def read_runs_csv(path):
-    """Rows of runs.csv by run index; `distance` is what the run's final % divides by (up to t_end when an
-    estimator stopped; runs.csv of an older gdnav has no distance_at_t_end_m)."""
-    with open(path, newline="") as f:
-        rows = {int(r["run_index"]): {k: float(v) for k, v in r.items()} for r in csv.DictReader(f)}
-    for v in rows.values():
-        v["distance"] = v.get("distance_at_t_end_m", v["distance_since_gnss_m"])
-    return rows
 
 
 def band_figure(stats, t_gnss):
