@@ -211,7 +211,7 @@ private:
         rows_ = 0;
         gnss_count_ = 0;
         file_->set_attribute("steps_recorded", static_cast<std::int64_t>(steps_));
-        file_->set_attribute("distance_since_gnss_m", metrics_.distance_since_gnss_m());
+        file_->set_attribute("distance_since_gnss_m", reference_ ? metrics_.distance_since_gnss_m() : kNoValue);
         file_->flush();
         metrics::write_run_record(
             fs::path(dir_) / "metrics.yaml",
