@@ -96,8 +96,9 @@ std::string stopped_estimates_note(const std::vector<metrics::RunRecord>& runs, 
     std::size_t n = 0;
     for (const auto& r : runs)
         if (!r.estimates_complete) {
-            list += (n++ ? ", " : "") + std::to_string(r.run_index) + " (t_end = " + metrics::fixed(r.t_end_s, 2, false) +
-                    " s)";
+            if (n++ > 0) list += ", ";
+            list += std::to_string(r.run_index);
+            list += " (t_end = " + metrics::fixed(r.t_end_s, 2, false) + " s)";
         }
     if (n == 0) return "";
     spdlog::warn("report: {}: {} run(s) with an estimator that stopped before the end; their final figures are at "
@@ -131,7 +132,8 @@ int write_batch_report(const std::vector<fs::path>& dirs, const ReportOptions& o
             spdlog::warn("report: {}: {} run(s) of the batch missing or incomplete: {}", where, merged.missing.size(),
                          index_ranges(merged.missing));
         }
-        preamble += "\n" + stopped_estimates_note(b.runs, where);
+        preamble += '\n';
+        preamble += stopped_estimates_note(b.runs, where);
         if (!merged.duplicates.empty())
             spdlog::warn("report: {}: run(s) {} found in more than one directory (identical metrics, counted once)",
                          where, index_ranges(merged.duplicates));
