@@ -160,7 +160,8 @@ private:
                                      hor.last(), metrics_.final_percent(metrics::Signal::hor), d_m,
                                      whole ? "" : "flown ", whole ? "" : " up to then");
         else if (hor.count() > 0)
-            horizontal = fmt::format("{} horizontal error {:.1f} m (GNSS never lost)", at, hor.last());
+            horizontal = fmt::format("{} horizontal error {:.1f} m (GNSS {})", at, hor.last(),
+                                     whole ? "never lost" : "not lost by then");
         return fmt::format("{}{}, {}", whole ? "" : "ESTIMATES INCOMPLETE; ", horizontal, att);
     }
 
