@@ -21,9 +21,13 @@ CLI::App* add_import_log_command(CLI::App& app, CliContext& ctx, CommandRunner& 
     sub->add_option("--steps", *steps, "number of steps (default: as far as every continuous signal reaches)")
         ->check(CLI::PositiveNumber);
     sub->add_option("--max-gap", o->max_gap_s, "largest gap [s] allowed in imu/mag/air/atm")->capture_default_str();
-    run = [o, steps, sub, &ctx]() {
+    auto reference = std::make_shared<std::string>();
+    sub->add_option("--reference", *reference,
+                    "CSV of the true trajectory (t_s, position, velocity, attitude; docs/replay.md), replayed as Truth");
+    run = [o, steps, reference, sub, &ctx]() {
         setup_logging("gdnav", ctx.log_level);
         if (sub->count("--steps")) o->steps = *steps;
+        if (sub->count("--reference")) o->reference = *reference;
         import_log(*o);
         return 0;
     };

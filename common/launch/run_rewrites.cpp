@@ -151,6 +151,12 @@ void add_replay(YAML::Node root, const RunConfig& rc, const RunRewrites& rw, con
     root["run"]["essential"] = sequence(essential);
     // A fresh DDS domain (the launcher picks one) rather than the recorded run's.
     root["run"].remove("domain_id");
+    // Without a replayed Truth the physics flies its own trajectory, which is no reference for recorded sensors:
+    // the navigation recorders score nothing (docs/replay.md).
+    if (!replayed.count(topics::kTruth))
+        for (auto it = comps.begin(); it != comps.end(); ++it)
+            if (it->second["type"] && it->second["type"].as<std::string>() == "nav_recorder")
+                it->second["reference"] = "none";
     if (removed.empty())
         spdlog::info("--replay: {} from {} (no member of the run produced them)", join(topics), record_dir.string());
     else

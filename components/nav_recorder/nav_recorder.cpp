@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -62,6 +63,10 @@ public:
         decimation_ = static_cast<std::uint64_t>(cfg.get_int("decimation", 10, 1, 1'000'000));
         flush_rows_ = static_cast<std::size_t>(cfg.get_int("flush_rows", 600, 1, 1'000'000));
         compression_ = static_cast<int>(cfg.get_int("compression", 4, 0, 9));
+        const std::string reference = cfg.get_string("reference", "truth");
+        if (reference != "truth" && reference != "none")
+            cfg.fail("reference", "'" + reference + "' is not one of truth, none");
+        reference_ = reference == "truth";
         if (cfg.get_bool("gnss_track", true))
             gnss_ = std::make_unique<runtime::Input<msg::GnssSample>>(*this, topics::kGnss);
         dir_ = run.out_dir;
@@ -78,8 +83,9 @@ public:
         const auto& v = t.v_n_mps();
         metrics_.add_ground_speed(ctx.t_s, ctx.dt_s, std::hypot(v[0], v[1]));
         const bool have_est = air_.available() && att_.available() && pos_.available();
+        if (reference_) metrics_.note_estimates(ctx.t_s, ctx.dt_s, {air_.available(), att_.available(), pos_.available()});
         std::optional<metrics::NavErrors> err;
-        if (have_est) {
+        if (have_est && reference_) {
             err = metrics::nav_errors(estimate_state(air_.get(), att_.get(), pos_.get()), truth_state(t), origin_.radii);
             metrics_.add_errors(ctx.t_s, ctx.dt_s, *err);
         }
@@ -89,9 +95,12 @@ public:
         if (gnss_ && gnss_->available() && gnss_->get().fix_valid() && gnss_count_ < flush_rows_)
             fill_gnss_row(&gnss_rows_[kGnssColumns * gnss_count_++], ctx.t_s, gnss_->get());
         if (ctx.k % decimation_ == 0) {
-            fill_truth_row(&truth_rows_[kTruthColumns * rows_], ctx.t_s, t, origin_, metrics_.distance_since_gnss_m());
+            double* truth_row = &truth_rows_[kTruthColumns * rows_];
+            fill_truth_row(truth_row, ctx.t_s, t, origin_, metrics_.distance_since_gnss_m());
+            if (!reference_) std::fill(truth_row + 1, truth_row + kTruthColumns, kNoValue);  // not a reference
+            const double h_m = reference_ || !pos_.available() ? t.h_m() : pos_.get().h_m();
             fill_estimate_row(&est_rows_[kEstimateColumns * rows_], ctx.t_s, air_.ptr(), att_.ptr(), pos_.ptr(),
-                              origin_, t.h_m());
+                              origin_, h_m);
             fill_error_row(&err_rows_[kErrorColumns * rows_], ctx.t_s, err ? &*err : nullptr);
             ++rows_;
         }
@@ -106,34 +115,62 @@ public:
         try {
             const SignalHold hold;
             flush(complete);
-            std::vector<H5File::MetricsRow> rows;
-            for (const auto& info : metrics::kSignals) {
-                const auto& s = metrics_.stats(info.signal);
-                rows.push_back({std::string(info.key), s.count(), s.mean(), s.std(), s.smax(), s.last()});
+            if (reference_) {
+                std::vector<H5File::MetricsRow> rows;
+                for (const auto& info : metrics::kSignals) {
+                    const auto& s = metrics_.stats(info.signal);
+                    rows.push_back({std::string(info.key), s.count(), s.mean(), s.std(), s.smax(), s.last()});
+                }
+                file_->write_metrics("metrics", rows);
             }
-            file_->write_metrics("metrics", rows);
             file_->set_attribute("complete", static_cast<std::int64_t>(complete ? 1 : 0));
             file_->close();
         } catch (const std::exception& e) {
             spdlog::error("nav_recorder: {}", e.what());
         }
-        const auto& hor = metrics_.stats(metrics::Signal::hor);
-        const auto& rot = metrics_.stats(metrics::Signal::rot);
-        const std::string att = rot.count() > 0
-                                    ? fmt::format("mean attitude error {:.3f} deg", math::rad2deg(rot.mean()))
-                                    : std::string("no attitude error yet (metrics start at t = 0)");
-        std::string horizontal = "no horizontal figure (metrics start at t = 0)";
-        if (hor.count() > 0 && metrics_.distance_since_gnss_m() > 0.0)
-            horizontal = fmt::format("final horizontal error {:.1f} m ({:.2f} % of {:.0f} m since t_GNSS)", hor.last(),
-                                     metrics_.final_percent(metrics::Signal::hor), metrics_.distance_since_gnss_m());
-        else if (hor.count() > 0)
-            horizontal = fmt::format("final horizontal error {:.1f} m (GNSS never lost)", hor.last());
-        spdlog::info("nav_recorder: {} run; {}, {} -> {}", complete ? "complete" : "INCOMPLETE", horizontal, att, dir_);
+        spdlog::info("nav_recorder: {} run; {} -> {}", complete ? "complete" : "INCOMPLETE", summary(), dir_);
     }
 
 private:
+    static constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
+
+    // The end-of-run line: the final horizontal error at t_end with the distance flown up to then, and the mean
+    // attitude error; when an estimator stopped, both are labelled with the time of its last estimate.
+    [[nodiscard]] std::string summary() const {
+        if (!reference_) return "reference: none, no error metrics";
+        const auto& hor = metrics_.stats(metrics::Signal::hor);
+        const auto& rot = metrics_.stats(metrics::Signal::rot);
+        const bool whole = metrics_.estimates_complete();
+        std::string stopped;
+        for (std::size_t i = 0; i < metrics::kEstimateCount; ++i)
+            if (metrics_.estimate_stopped(static_cast<metrics::Estimate>(i)))
+                stopped += fmt::format("{}{}", stopped.empty() ? "" : ", ", metrics::kEstimateKeys[i]);
+        const std::string at =
+            whole ? std::string("final")
+                  : fmt::format("final at t = {:.2f} s (last step with every estimate; stopped: {})", metrics_.t_last_s(),
+                                stopped);
+        const std::string att = rot.count() > 0
+                                    ? fmt::format("mean attitude error {:.3f} deg{}", math::rad2deg(rot.mean()),
+                                                  whole ? "" : fmt::format(" over [0, {:.2f}] s", metrics_.t_last_s()))
+                                    : std::string("no attitude error yet (metrics start at t = 0)");
+        const double d_m = whole ? metrics_.distance_since_gnss_m() : metrics_.distance_at_t_last_m();
+        std::string horizontal = "no horizontal figure (metrics start at t = 0)";
+        if (hor.count() > 0 && d_m > 0.0)
+            horizontal = fmt::format("{} horizontal error {:.1f} m ({:.2f} % of {:.0f} m {}since t_GNSS{})", at,
+                                     hor.last(), metrics_.final_percent(metrics::Signal::hor), d_m,
+                                     whole ? "" : "flown ", whole ? "" : " up to then");
+        else if (hor.count() > 0)
+            horizontal = fmt::format("{} horizontal error {:.1f} m (GNSS {})", at, hor.last(),
+                                     whole ? "never lost" : "not lost by then");
+        return fmt::format("{}{}, {}", whole ? "" : "ESTIMATES INCOMPLETE; ", horizontal, att);
+    }
+
     void start(const msg::Truth& t) {
         started_ = true;
+        // Said once, at the run's first step (configure also runs when a run is only checked).
+        if (!reference_)
+            spdlog::warn("nav_recorder: reference: none (no recorded Truth drives the physics): no error metrics, "
+                         "only the estimates are recorded (docs/replay.md)");
         origin_.lat_rad = t.lat_rad();
         origin_.lon_rad = t.lon_rad();
         origin_.radii = earth::radii(t.lat_rad());
@@ -158,6 +195,7 @@ private:
         file_->set_attribute("steps_planned", static_cast<std::int64_t>(run_.steps));
         file_->set_attribute("lat0_rad", origin_.lat_rad);
         file_->set_attribute("lon0_rad", origin_.lon_rad);
+        if (!reference_) file_->set_attribute("reference", std::string("none"));
         file_->set_table_attribute(tables_[0], "description", "true state (Truth topic), SI units, NED");
         file_->set_table_attribute(tables_[1], "description", "navigation estimate (AirData/Attitude/PositionEstimate)");
         file_->set_table_attribute(tables_[2], "description", "estimate minus truth (docs/montecarlo.md)");
@@ -174,10 +212,12 @@ private:
         rows_ = 0;
         gnss_count_ = 0;
         file_->set_attribute("steps_recorded", static_cast<std::int64_t>(steps_));
-        file_->set_attribute("distance_since_gnss_m", metrics_.distance_since_gnss_m());
+        file_->set_attribute("distance_since_gnss_m", reference_ ? metrics_.distance_since_gnss_m() : kNoValue);
         file_->flush();
-        metrics::write_run_record(fs::path(dir_) / "metrics.yaml",
-                                  metrics::make_run_record(metrics_, complete, run_.seed, run_.run_index, steps_));
+        metrics::write_run_record(
+            fs::path(dir_) / "metrics.yaml",
+            reference_ ? metrics::make_run_record(metrics_, complete, run_.seed, run_.run_index, steps_)
+                       : metrics::make_unreferenced_record(complete, run_.seed, run_.run_index, steps_, metrics_.t_gnss_s()));
     }
 
     runtime::Input<msg::Truth> truth_{*this, topics::kTruth};
@@ -200,6 +240,7 @@ private:
     std::size_t gnss_count_{0};
     std::uint64_t steps_{0};
     std::uint64_t last_k_{0};
+    bool reference_{true};  // Truth is the reference trajectory (false: `reference: none`, no errors)
     bool started_{false};
     bool finished_{false};
 };

@@ -14,6 +14,10 @@
 //                   lat0_rad, lon0_rad, distance_since_gnss_m
 //   metrics.yaml  the per-run record (common/core/metrics/run_record.hpp); `complete: true` only after a normal end
 //
+// A step enters the metrics only when it has all three estimates. An estimator that stops (killed, lost) before the
+// end leaves metrics.yaml with `estimates_complete: false`, the time of each estimate's last step, and every figure
+// over [0, t_end] with the final percentages of the distance flown up to t_end (run_metrics.hpp).
+//
 // Rows are buffered and written every `flush_rows` rows (HDF5 flush + metrics.yaml with complete: false), so a
 // killed run leaves a readable file holding everything up to the last flush, marked complete = 0.
 //
@@ -26,6 +30,8 @@
 //   gnss_track: true     # record the GNSS fixes (needs a GnssSample producer)
 //   metrics_start_s: 0   # start of the metrics window
 //   attitude_trend_from_s: 500   # start of the attitude-drift fit (metrics.yaml trends; docs/montecarlo.md)
+//   reference: truth     # none: Truth is no reference (a replay without recorded Truth, set by --replay): no
+//                        # errors, no metrics, truth columns NaN; metrics.yaml says `reference: none` (docs/replay.md)
 #include "framework/registry.hpp"
 
 namespace gdnav::nav_recorder {

@@ -2,6 +2,7 @@
 
 Shared by report.py (PNG figures) and review.py (HTML flight review pages). Debian's python3-yaml, -numpy, -h5py.
 """
+import csv
 import math
 import os
 
@@ -35,6 +36,37 @@ def signal(rec, key, stat):
     return float(v) if v is not None else float("nan")
 
 
+def final_distance(rec):
+    """The distance a run's final percentages divide by: flown since t_GNSS up to t_end when an estimator stopped
+    before the end (metrics.yaml estimates_complete: false), else to the end of the flight."""
+    if rec.get("estimates_complete", True) is False:
+        return float(rec["distance_at_t_end_m"])
+    return float(rec["distance_since_gnss_m"])
+
+
+def stopped_note(rec):
+    """'' for a run whose estimates reach the end; else which estimates stopped and when (metrics.yaml)."""
+    if rec.get("estimates_complete", True) is not False:
+        return ""
+    last = {k: float("nan") if v is None else float(v) for k, v in (rec.get("last_estimate_s") or {}).items()}
+    latest = max([v for v in last.values() if math.isfinite(v)], default=float("nan"))
+    # The estimates last seen before the others stopped (or never came).
+    gone = [f"{k} at t = {v:.2f} s" if math.isfinite(v) else f"{k} never" for k, v in last.items()
+            if not math.isfinite(v) or v < latest]
+    t_end = float(rec.get("t_end_s", float("nan")))
+    return f"estimator stopped ({', '.join(gone) or f'all at t = {latest:.2f} s'}): figures over [0, {t_end:.2f}] s"
+
+
+def read_runs_csv(path):
+    """Rows of runs.csv by run index; `distance` is what the run's final % divides by (up to t_end when an
+    estimator stopped; runs.csv of an older gdnav has no distance_at_t_end_m)."""
+    with open(path, newline="") as f:
+        rows = {int(r["run_index"]): {k: float(v) for k, v in r.items()} for r in csv.DictReader(f)}
+    for v in rows.values():
+        v["distance"] = v.get("distance_at_t_end_m", v["distance_since_gnss_m"])
+    return rows
+
+
 def batch_label(batch):
     """'scenario #1' / 'scenario #2' for the paper generators (batch.yaml), else the folder name."""
     label = os.path.basename(os.path.normpath(batch))
@@ -58,7 +90,8 @@ def read_table(path, name, columns):
 
 
 class Streamed:
-    """Across-run mean and population std per time sample of the given columns, one run at a time."""
+    """Across-run mean and population std per time sample of the given columns, one run at a time. A sample without
+    a value (NaN: a run whose estimator stopped) is left out of that time's mean and std."""
 
     def __init__(self, columns):
         self.columns = list(columns)
@@ -66,6 +99,7 @@ class Streamed:
         self.t = None
         self.s1 = {}
         self.s2 = {}
+        self.count = {}
 
     def add(self, t, err):
         if self.t is None:
@@ -73,18 +107,24 @@ class Streamed:
             for c in self.columns:
                 self.s1[c] = np.zeros_like(t)
                 self.s2[c] = np.zeros_like(t)
+                self.count[c] = np.zeros_like(t)
         m = min(len(self.t), len(t))
         if m < len(self.t):  # a shorter run: keep the common time span
             self.t = self.t[:m]
             for c in self.columns:
-                self.s1[c], self.s2[c] = self.s1[c][:m], self.s2[c][:m]
+                self.s1[c], self.s2[c], self.count[c] = self.s1[c][:m], self.s2[c][:m], self.count[c][:m]
         for c in self.columns:
             x = err[c][:m]
+            ok = np.isfinite(x)
+            x = np.where(ok, x, 0.0)
             self.s1[c] += x
             self.s2[c] += x * x
+            self.count[c] += ok
         self.n += 1
 
     def mean_std(self, c):
-        mean = self.s1[c] / self.n
-        var = np.maximum(self.s2[c] / self.n - mean * mean, 0.0)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            n = np.where(self.count[c] > 0, self.count[c], np.nan)
+            mean = self.s1[c] / n
+            var = np.maximum(self.s2[c] / n - mean * mean, 0.0)
         return mean, np.sqrt(var)

@@ -29,7 +29,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from batch_runs import DEG, Streamed, batch_label, load_runs, read_table, signal  # noqa: E402
+from batch_runs import DEG, Streamed, batch_label, final_distance, load_runs, read_table, signal  # noqa: E402
 
 # (column of /error, label, scale to plot units, unit)
 ATTITUDE = [("yaw_rad", r"$\hat\psi-\psi$", DEG, "deg"), ("pitch_rad", r"$\hat\theta-\theta$", DEG, "deg"),
@@ -123,7 +123,7 @@ def scatter_figures(out, runs, label):
     axes[0].set_xlim(-lim, lim)
     axes[0].set_ylim(-lim, lim)
     axes[0].set_aspect("equal")
-    dist = np.array([float(r["metrics"]["distance_since_gnss_m"]) for r in runs]) / 1000.0
+    dist = np.array([final_distance(r["metrics"]) for r in runs]) / 1000.0  # up to t_end
     hor = [signal(r["metrics"], "hor_m", "final") for r in runs]
     axes[1].scatter(dist, hor, s=14, color="tab:orange")
     if len(dist) and np.nanmax(dist) > 0:

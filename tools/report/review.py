@@ -18,7 +18,6 @@ bands add the runs in run order whatever the number of workers, so the pages do 
 Each page embeds plotly.js (review_page.py) and opens offline. Needs Debian's python3-plotly, -numpy, -h5py, -yaml.
 """
 import argparse
-import csv
 import math
 import multiprocessing
 import os
@@ -37,7 +36,8 @@ import numpy as np  # noqa: E402
 import yaml  # noqa: E402
 
 import run_events  # noqa: E402
-from batch_runs import DEG, Streamed, batch_label, load_runs, read_table, signal  # noqa: E402
+from batch_runs import (DEG, Streamed, batch_label, final_distance, load_runs, read_runs_csv, read_table,  # noqa: E402
+                        signal, stopped_note)
 from review_page import Page, esc, markdown_html, rounded, stride_for  # noqa: E402
 
 # Error rows of the run and batch pages: (title, [(column of /error, label, scale, decimals)], unit)
@@ -75,8 +75,9 @@ def time_axis(fig, t_gnss, t_end):
     fig.update_xaxes(range=[0.0, max(t_end, 1e-3)], row="all", col=1)
 
 
-def error_figure(t, err, t_gnss, faults, t_end):
-    """Errors versus time, one row per group, GNSS loss and fault windows marked."""
+def error_figure(t, err, t_gnss, faults, t_end, t_stop=None):
+    """Errors versus time, one row per group, GNSS loss and fault windows marked (and t_stop, the last step with
+    every estimate, when an estimator stopped before the end)."""
     fig = make_subplots(rows=len(ERROR_ROWS), cols=1, shared_xaxes=True, vertical_spacing=0.04,
                         subplot_titles=[f"{title} error [{unit}]" for title, _, unit in ERROR_ROWS])
     keep = t >= 0.0  # the metrics window (t < 0 is the initial transient, docs/montecarlo.md)
@@ -92,6 +93,10 @@ def error_figure(t, err, t_gnss, faults, t_end):
         fig.add_vrect(x0=a, x1=b, fillcolor="orange", opacity=0.18, line_width=0, row="all", col=1)
         fig.add_annotation(x=a, y=1.0, yref="paper", xanchor="left", yanchor="bottom", showarrow=False, yshift=22,
                            text="fault: " + esc(run_events.fault_label(f)), font=dict(size=10, color="#b35900"))
+    if t_stop is not None:
+        fig.add_vline(x=t_stop, line=dict(color="#d62728", dash="dash", width=1.2), row="all", col=1)
+        fig.add_annotation(x=t_stop, y=1.0, yref="paper", xanchor="right", yanchor="bottom", showarrow=False,
+                           yshift=4, text=f"estimates stop (t = {t_stop:.2f} s)", font=dict(size=11, color="#d62728"))
     time_axis(fig, t_gnss, t_end)
     fig.update_xaxes(title_text="t [s]", row=len(ERROR_ROWS), col=1)
     fig.update_layout(height=230 * len(ERROR_ROWS) + 80, margin=dict(l=60, r=20, t=80, b=40),
@@ -102,15 +107,19 @@ def error_figure(t, err, t_gnss, faults, t_end):
 def track_figure(truth, est, t_gnss):
     """Horizontal track (north/east from the initial true position), true and estimated, GNSS loss and ends marked."""
     fig = go.Figure()
-    step = stride_for(len(truth["t"]))
+    step = stride_for(len((truth or est)["t"]))
     for name, d, color in (("true", truth, "black"), ("estimated", est, "#d62728")):
+        if d is None:  # no reference trajectory
+            continue
         east, north = d["east_m"][::step] / 1000.0, d["north_m"][::step] / 1000.0
         fig.add_trace(go.Scatter(x=rounded(east, 4), y=rounded(north, 4), mode="lines", name=f"{name} track",
                                  line=dict(color=color, width=1.5), text=rounded(d["t"][::step], 1),
                                  hovertemplate="t = %{text} s<br>E %{x} km, N %{y} km"))
         i = int(np.searchsorted(d["t"], t_gnss))
-        for j, what, symbol in ((i, f"{name}: GNSS lost (t = {t_gnss:g} s)", "x"), (-1, f"{name}: end", "circle")):
-            if 0 <= j < len(d["t"]) or j == -1:
+        finite = np.flatnonzero(np.isfinite(d["east_m"]))  # an estimator that stopped ends its track early
+        last = int(finite[-1]) if len(finite) else -1
+        for j, what, symbol in ((i, f"{name}: GNSS lost (t = {t_gnss:g} s)", "x"), (last, f"{name}: end", "circle")):
+            if 0 <= j < len(d["t"]):
                 fig.add_trace(go.Scatter(x=[float(d["east_m"][j]) / 1000.0], y=[float(d["north_m"][j]) / 1000.0],
                                          mode="markers", name=what, marker=dict(color=color, symbol=symbol, size=10)))
     fig.update_layout(title="Horizontal track (from the initial true position)", height=620,
@@ -147,15 +156,29 @@ def events_figure(t_fix, denied, faults, timed, t_start, t_end):
 
 
 def run_summary_rows(m):
-    rows = [("complete", str(m.get("complete"))), ("t_end [s]", fmt(float(m.get("t_end_s", float("nan"))), 1)),
-            ("distance since t_GNSS [m]", fmt(float(m.get("distance_since_gnss_m") or float("nan")), 0))]
+    if m.get("reference") == "none":
+        return [("complete", str(m.get("complete"))),
+                ("reference", "none: no reference trajectory, so no error metrics (docs/replay.md)")]
+    note = stopped_note(m)
+    t_end = float(m.get("t_end_s", float("nan")))
+    final = f"final at t = {t_end:.2f} s" if note else "final"
+    rows = [("complete", str(m.get("complete")))]
+    if note:
+        rows.append(("estimates", "INCOMPLETE: " + note))
+    rows += [("t_end [s]", fmt(t_end, 1))]
+    if note:
+        rows += [("distance since t_GNSS up to t_end [m]", fmt(final_distance(m), 0)),
+                 ("distance since t_GNSS to the end of the flight [m]",
+                  fmt(float(m.get("distance_since_gnss_m") or float("nan")), 0))]
+    else:
+        rows.append(("distance since t_GNSS [m]", fmt(float(m.get("distance_since_gnss_m") or float("nan")), 0)))
     pct = m.get("final_percent") or {}
-    for key, lab in (("hor_m", "final Δx_hor"), ("cross_m", "final Δx_cross"), ("along_m", "final Δx_along")):
+    for key, lab in (("hor_m", "Δx_hor"), ("cross_m", "Δx_cross"), ("along_m", "Δx_along")):
         p = pct.get(key.split("_")[0])
-        rows.append((f"{lab} [m]", fmt(signal(m, key, "final"), 1, key != "hor_m") +
+        rows.append((f"{final} {lab} [m]", fmt(signal(m, key, "final"), 1, key != "hor_m") +
                      (f" ({fmt(float(p), 2, key != 'hor_m')} %)" if p is not None else "")))
-    rows += [("final ĥ−h [m]", fmt(signal(m, "h_m", "final"), 2, True)),
-             ("final v̂_N−v_N, v̂_E−v_E [m/s]",
+    rows += [(f"{final} ĥ−h [m]", fmt(signal(m, "h_m", "final"), 2, True)),
+             (f"{final} v̂_N−v_N, v̂_E−v_E [m/s]",
               fmt(signal(m, "vn_mps", "final"), 2, True) + ", " + fmt(signal(m, "ve_mps", "final"), 2, True)),
              ("‖Δr̂‖ mean, max [deg]",
               fmt(signal(m, "rot_rad", "mean") * DEG, 3) + ", " + fmt(abs(signal(m, "rot_rad", "max")) * DEG, 3))]
@@ -184,10 +207,15 @@ def run_page(run_dir, h5, metrics, path, title, back=None):
               f"track from t = {t_track[0]:g} s to {t_track[1]:g} s, errors from t = 0 (the metrics window), "
               "at most 4000 points per curve.")
     page.table(["metric (metrics.yaml)", "value"], run_summary_rows(metrics))
+    referenced = metrics.get("reference") != "none"
     page.heading("Track")
-    page.figure(track_figure(truth, estimate, t_gnss), "track")
+    page.figure(track_figure(truth if referenced else None, estimate, t_gnss), "track")
     page.heading("Errors versus time")
-    page.figure(error_figure(t, err, t_gnss, faults, t_end), "errors")
+    if referenced:
+        t_stop = float(metrics["t_end_s"]) if stopped_note(metrics) else None
+        page.figure(error_figure(t, err, t_gnss, faults, t_end, t_stop), "errors")
+    else:
+        page.note("No reference trajectory (metrics.yaml reference: none): the run has no errors to plot.")
     page.heading("Events")
     page.figure(events_figure(tf, denied, faults, timed, float(tt[0]) if len(tt) else 0.0, t_end), "events")
     rows = [(fmt(float(f.get("at_s", 0.0)), 2), f"fault ({fault_src})",
@@ -203,11 +231,6 @@ def run_page(run_dir, h5, metrics, path, title, back=None):
     page.table(["t [s]", "source", "event"], rows, right={0})
     page.write(path)
     return t, err
-
-
-def read_runs_csv(path):
-    with open(path, newline="") as f:
-        return {int(r["run_index"]): {k: float(v) for k, v in r.items()} for r in csv.DictReader(f)}
 
 
 def band_figure(stats, t_gnss):
@@ -250,7 +273,7 @@ def scatter_figure(csv_rows, pages):
     fig.add_trace(go.Scatter(x=[v["cross_m_final"] for v in r], y=[v["along_m_final"] for v in r], mode="markers",
                              text=text, customdata=links, hovertemplate=hover, marker=dict(size=10, color="#9467bd"),
                              name="runs"), row=1, col=1)
-    fig.add_trace(go.Scatter(x=[v["distance_since_gnss_m"] / 1000.0 for v in r], y=[v["hor_m_final"] for v in r],
+    fig.add_trace(go.Scatter(x=[v["distance"] / 1000.0 for v in r], y=[v["hor_m_final"] for v in r],
                              mode="markers", text=[f"{s}, {v['hor_pct']:.2f} %" for s, v in zip(text, r)],
                              customdata=links, hovertemplate=hover, marker=dict(size=10, color="#ff7f0e"),
                              name="runs "), row=1, col=2)
@@ -327,10 +350,14 @@ def batch_pages(batch, out, tables_md, runs_csv, jobs=1):
     rows = []
     for i in sorted(pages):
         v = csv_rows.get(i, {})
-        rows.append([("html", f'<a href="{esc(pages[i])}">run {i}</a>'), fmt(v.get("hor_m_final"), 1),
-                     fmt(v.get("hor_pct"), 2), fmt(v.get("distance_since_gnss_m"), 0),
+        stop = "" if v.get("estimates_complete", 1.0) == 1.0 else f" (estimates stop at t = {v.get('t_end_s'):.2f} s)"
+        rows.append([("html", f'<a href="{esc(pages[i])}">run {i}</a>{esc(stop)}'), fmt(v.get("hor_m_final"), 1),
+                     fmt(v.get("hor_pct"), 2), fmt(v.get("distance"), 0),
                      fmt(v.get("h_m_final"), 2, True), fmt((v.get("rot_rad_mean") or float("nan")) * DEG, 3)])
     page.table(["run", "final Δx_hor [m]", "[%]", "distance [m]", "final ĥ−h [m]", "‖Δr̂‖ mean [deg]"], rows)
+    if any(v.get("estimates_complete", 1.0) != 1.0 for v in csv_rows.values()):
+        page.note("final: at t_end, the end of the flight or, for a run whose estimator stopped, its last step with "
+                  "every estimate; distance: flown since t_GNSS up to t_end.")
     page.write(os.path.join(out, "review.html"))
     size = sum(os.path.getsize(os.path.join(out, p)) for p in list(pages.values()) + ["review.html"])
     print(f"review.py: {len(runs)} runs -> {os.path.join(out, 'review.html')} and review/run_*.html "

@@ -44,7 +44,8 @@ BatchAggregate aggregate_runs(const std::vector<RunRecord>& runs) {
         s.max = aggregate_abs_max(column([i](const RunRecord& r) { return r.signals[i].max; }));
         s.final = aggregate(column([i](const RunRecord& r) { return r.signals[i].final; }));
     }
-    b.distance = aggregate(column([](const RunRecord& r) { return r.distance_m; }));
+    // The distance each run's final percentages divide by (up to t_end; the whole flight when estimates complete).
+    b.distance = aggregate(column([](const RunRecord& r) { return r.final_distance_m(); }));
     b.hor_pct = aggregate(column([](const RunRecord& r) { return r.hor_pct; }));
     b.cross_pct = aggregate(column([](const RunRecord& r) { return r.cross_pct; }));
     b.along_pct = aggregate(column([](const RunRecord& r) { return r.along_pct; }));

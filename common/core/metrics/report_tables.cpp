@@ -118,11 +118,13 @@ void runs_table(std::ostringstream& o, const LabelledBatch& b) {
     std::stable_sort(by_hor.begin(), by_hor.end(), [&](auto* a, auto* c) { return key_hor(a) < key_hor(c); });
     std::stable_sort(by_att.begin(), by_att.end(), [&](auto* a, auto* c) { return key_att(a) < key_att(c); });
     auto line = [](const char* what, const RunRecord* r) {
-        std::string s = std::string("| ") + what + " | " + std::to_string(r->run_index) + " | ";
+        std::string s = std::string("| ") + what + " | " + std::to_string(r->run_index);
+        if (!r->estimates_complete) s += " (estimates stop at t = " + fixed(r->t_end_s, 2, false) + " s)";
+        s += " | ";
         s += fixed(r->signals[index(Signal::rot)].mean * kRad2Deg, 3, false) + " | ";
         s += fixed(r->signals[index(Signal::h)].final, 2, true) + " | ";
         s += fixed(r->signals[index(Signal::hor)].final, 0, false) + " | " + fixed(r->hor_pct, 2, false) + " | ";
-        s += fixed(r->distance_m, 0, false) + " |\n";
+        s += fixed(r->final_distance_m(), 0, false) + " |\n";
         return s;
     };
     o << "### Best and worst runs, " << b.label << "\n\n"
@@ -169,7 +171,7 @@ std::string runs_csv(const std::vector<RunRecord>& runs) {
     o << "run_index,seed,complete,samples,t_end_s,distance_since_gnss_m,hor_pct,cross_pct,along_pct";
     for (const auto& info : kSignals)
         for (const char* stat : {"mean", "std", "max", "final"}) o << "," << info.key << "_" << stat;
-    o << "\n";
+    o << ",estimates_complete,distance_at_t_end_m\n";
     for (const auto& r : runs) {
         o << r.run_index << "," << r.seed << "," << (r.complete ? 1 : 0) << "," << r.samples << ","
           << csv(r.t_end_s) << "," << csv(r.distance_m) << "," << csv(r.hor_pct)
@@ -177,7 +179,7 @@ std::string runs_csv(const std::vector<RunRecord>& runs) {
         for (const auto& s : r.signals)
             o << "," << csv(s.mean) << "," << csv(s.std) << "," << csv(s.max) << ","
               << csv(s.final);
-        o << "\n";
+        o << "," << (r.estimates_complete ? 1 : 0) << "," << csv(r.final_distance_m()) << "\n";
     }
     return o.str();
 }

@@ -9,6 +9,8 @@
 #include "config/config.hpp"
 #include "io/flight_log/csv_table.hpp"
 #include "io/flight_log/log_layout.hpp"
+#include "io/flight_log/log_reference.hpp"
+#include "msgs/messages.hpp"
 #include "io/recording/record_file.hpp"
 
 namespace gdnav::app {
@@ -135,6 +137,19 @@ void write_alignment(const std::vector<double>& imu_align, const std::vector<dou
     spdlog::info("export-log: alignment of the first ImuSample and MagSample -> {}", kAlignmentFile);
 }
 
+// A recorded Truth -> reference.csv at every step: the reference trajectory for `import-log --reference`.
+void export_reference(RecordSamples& rec, const ExportOptions& o) {
+    CsvWriter csv(o.csv_dir / kReferenceFile, reference_columns());
+    for (std::size_t i = 0; i < rec.size(); ++i) csv.row(reference_row(*static_cast<const msg::Truth*>(rec.load(i))));
+    try {
+        csv.close();
+    } catch (const std::runtime_error& e) {
+        fail("export-log", e.what());
+    }
+    spdlog::info("export-log: {} -> {}: {} rows (every step; the reference for import-log --reference)",
+                 topics::kTruth, kReferenceFile, rec.size());
+}
+
 }  // namespace
 
 void export_log(const ExportOptions& o) {
@@ -158,6 +173,13 @@ void export_log(const ExportOptions& o) {
     }
     if (written == 0) fail(record_dir.string(), "no record of a sensor topic (ImuSample, MagSample, AirSample, AtmSample, GnssSample)");
     write_alignment(imu_align, mag_align, o);
+    auto truth = recording.topics.find(topics::kTruth);
+    if (truth != recording.topics.end()) {
+        RecordSamples rec(std::move(truth->second));
+        export_reference(rec, o);
+    } else {
+        spdlog::info("export-log: no record of {}: no {}", topics::kTruth, kReferenceFile);
+    }
 }
 
 }  // namespace gdnav::app

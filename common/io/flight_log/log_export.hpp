@@ -1,7 +1,8 @@
 #pragma once
 // `gdnav export-log`: a recorded gdnav run (<run_dir>/record/*.cdr) written in the CSV layout of log_layout.hpp,
 // each sensor group at its own rate (a divisor of the grid rate; GNSS: only steps with a valid fix), plus
-// alignment.csv from the first ImuSample and MagSample. docs/replay.md.
+// alignment.csv from the first ImuSample and MagSample, and reference.csv (every step) when Truth was recorded.
+// docs/replay.md.
 #include <filesystem>
 #include <map>
 #include <string>

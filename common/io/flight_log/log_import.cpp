@@ -10,8 +10,10 @@
 #include "config/config.hpp"
 #include "io/flight_log/csv_table.hpp"
 #include "io/flight_log/log_layout.hpp"
+#include "io/flight_log/log_reference.hpp"
 #include "io/recording/recording_writer.hpp"
 #include "framework/topic_types.hpp"
+#include "msgs/messages.hpp"
 
 namespace gdnav::app {
 
@@ -228,7 +230,7 @@ std::vector<Track> make_tracks(const std::vector<LoadedGroup>& loaded, const std
 
 // One recording, the groups interleaved step by step (log-time order, as the recorder writes).
 void write_recording(const fs::path& record_dir, const std::vector<std::string>& topics, std::vector<Track>& tracks,
-                     const ImportOptions& o, std::uint64_t steps) {
+                     ReferenceTrack* reference, const ImportOptions& o, std::uint64_t steps) {
     recorder::RecordingOptions ro;
     ro.t0_s = o.t0_s;
     ro.dt_s = o.dt_s;
@@ -249,6 +251,12 @@ void write_recording(const fs::path& record_dir, const std::vector<std::string>&
                 tr.s->ops->set_stamp(tr.s->p, 0, k, tk);
                 w.append(i, k, tr.s->p);
             }
+            if (reference) {
+                msg::Truth truth;
+                reference->fill(k, truth);
+                runtime::message_ops<msg::Truth>().set_stamp(&truth, 0, k, tk);
+                w.append(tracks.size(), k, &truth);
+            }
         }
         w.close(true);
     } catch (const std::runtime_error& e) {
@@ -258,8 +266,9 @@ void write_recording(const fs::path& record_dir, const std::vector<std::string>&
 }
 
 // The per-file log lines and <run_dir>/import.yaml.
-void report_import(const std::vector<Track>& tracks, const std::vector<std::string>& topics, bool aligned,
-                   const ImportOptions& o, std::uint64_t steps, const fs::path& record_dir) {
+void report_import(const std::vector<Track>& tracks, const ReferenceTrack* reference,
+                   const std::vector<std::string>& topics, bool aligned, const ImportOptions& o, std::uint64_t steps,
+                   const fs::path& record_dir) {
     for (const auto& tr : tracks) {
         if (tr.fixes)
             spdlog::info("import-log: {}: {} rows, {} fixes on the grid -> {}", tr.g->table.file, tr.g->table.rows(),
@@ -267,12 +276,20 @@ void report_import(const std::vector<Track>& tracks, const std::vector<std::stri
         else
             spdlog::info("import-log: {}: {} rows -> {}", tr.g->table.file, tr.g->table.rows(), tr.g->group->topic);
     }
+    if (reference)
+        spdlog::info("import-log: reference {}: {} rows ({}) -> {}", reference->file(), reference->rows(),
+                     reference->form(), topics::kTruth);
+    else
+        spdlog::info("import-log: no --reference: a replay of this log has no true trajectory and writes no error "
+                     "metrics (metrics.yaml reference: none; docs/replay.md)");
     std::ofstream info(o.run_dir / "import.yaml");
     char grid[160];
     std::snprintf(grid, sizeof(grid), "t0_s: %.17g\ndt_s: %.17g\nsteps: %llu\n", o.t0_s, o.dt_s,
                   static_cast<unsigned long long>(steps));
     info << "# written by gdnav import-log (docs/replay.md)\nsource: \"" << fs::absolute(o.csv_dir).string() << "\"\n"
-         << grid << "alignment: " << (aligned ? "true" : "false") << "\ntopics: [";
+         << grid << "alignment: " << (aligned ? "true" : "false") << "\n";
+    if (reference) info << "reference: \"" << fs::absolute(reference->file()).string() << "\"\n";
+    info << "topics: [";
     for (std::size_t i = 0; i < topics.size(); ++i) info << (i ? ", " : "") << topics[i];
     info << "]\n";
     spdlog::info("import-log: {} steps of {} s from t0 = {} s (t = {} .. {} s) written to {}", steps, o.dt_s, o.t0_s,
@@ -290,8 +307,13 @@ void import_log(const ImportOptions& o) {
     std::vector<std::string> topics;
     for (const auto& g : loaded) topics.push_back(g.group->topic);
     std::vector<Track> tracks = make_tracks(loaded, align, o, steps);
-    write_recording(record_dir, topics, tracks, o, steps);
-    report_import(tracks, topics, align.has_value(), o, steps, record_dir);
+    std::optional<ReferenceTrack> reference;
+    if (o.reference) {
+        reference.emplace(*o.reference, o, steps);
+        topics.push_back(topics::kTruth);
+    }
+    write_recording(record_dir, topics, tracks, reference ? &*reference : nullptr, o, steps);
+    report_import(tracks, reference ? &*reference : nullptr, topics, align.has_value(), o, steps, record_dir);
 }
 
 }  // namespace gdnav::app

@@ -10,6 +10,8 @@
 //     Two fixes on one step are an error. Gaps are allowed (signal loss).
 //   * alignment.csv (optional): its values go into the align_* fields of every ImuSample / MagSample. Without it
 //     they are zero and the filters need `init_mode: measurements`.
+//   * reference (optional, --reference FILE): the true trajectory, resampled and recorded as gdnav/Truth
+//     (log_reference.hpp); without it a replay has no reference and writes no error metrics.
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -26,6 +28,7 @@ struct ImportOptions {
     double dt_s{0.01};
     std::optional<std::uint64_t> steps;  // default: as many as every continuous file covers
     double max_gap_s{kDefaultMaxGapS};
+    std::optional<std::filesystem::path> reference;  // CSV of the true trajectory (log_reference.hpp)
 };
 
 // Throws config::ConfigError (one line: file, line, column) on bad input.

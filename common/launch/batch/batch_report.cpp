@@ -89,6 +89,25 @@ int run_report_tool(const std::string& name, std::vector<std::string> args) {
     return code;
 }
 
+// Runs whose estimator stopped before the end (killed, lost) are counted, but their finals are at their last
+// estimate: a line of the preamble and a warning name them.
+std::string stopped_estimates_note(const std::vector<metrics::RunRecord>& runs, const std::string& where) {
+    std::string list;
+    std::size_t n = 0;
+    for (const auto& r : runs)
+        if (!r.estimates_complete) {
+            if (n++ > 0) list += ", ";
+            list += std::to_string(r.run_index);
+            list += " (t_end = " + metrics::fixed(r.t_end_s, 2, false) + " s)";
+        }
+    if (n == 0) return "";
+    spdlog::warn("report: {}: {} run(s) with an estimator that stopped before the end; their final figures are at "
+                 "their last estimate: {}", where, n, list);
+    return "  - " + std::to_string(n) + " of them with an estimator that stopped before the end (metrics.yaml "
+           "`estimates_complete: false`): their figures cover [0, t_end], finals at t_end, % of the distance flown up "
+           "to t_end: runs " + list + "\n";
+}
+
 }  // namespace
 
 int write_batch_report(const std::vector<fs::path>& dirs, const ReportOptions& o, std::vector<std::size_t>* counts) {
@@ -113,7 +132,8 @@ int write_batch_report(const std::vector<fs::path>& dirs, const ReportOptions& o
             spdlog::warn("report: {}: {} run(s) of the batch missing or incomplete: {}", where, merged.missing.size(),
                          index_ranges(merged.missing));
         }
-        preamble += "\n";
+        preamble += '\n';
+        preamble += stopped_estimates_note(b.runs, where);
         if (!merged.duplicates.empty())
             spdlog::warn("report: {}: run(s) {} found in more than one directory (identical metrics, counted once)",
                          where, index_ranges(merged.duplicates));
