@@ -46,11 +46,12 @@ void Clock::Impl::write_summary(bool completed, double now) {
     for (Member* m : table) timing = timing || (m->free && !m->observer()) || m->dead;
     const std::uint64_t rejected = write_rejected(f);
     f << "reproducible: " << (timing ? "false" : "true") << "\n";
-    // Rejected samples were never used, but the run's outputs are then those of the producers' samples only if the
-    // producers were identified right (docs/protocol.md §2.5): the claim says so.
+    // Rejected samples were never used: the outputs are those of a run without them, which holds only as far as the
+    // producers were identified right (docs/protocol.md §2.5). The claim says what `reproducible` then means.
     if (rejected > 0)
-        f << "reproducible_claim: \"outputs computed from the producers' samples only; " << rejected
-          << " rejected samples (rejected_samples) were not used\"\n";
+        f << "reproducible_claim: \"as a run without the " << rejected
+          << " rejected samples (rejected_samples): samples not written by a topic's producer were never used, and a "
+             "sample with a bad stamp counted as not available at its step\"\n";
 }
 
 std::uint64_t Clock::Impl::write_rejected(std::ostream& f) const {
