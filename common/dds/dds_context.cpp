@@ -20,7 +20,8 @@ namespace gdnav::runtime {
 using namespace eprosima::fastdds::dds;
 
 DdsContext::DdsContext(int domain_id, const std::filesystem::path& profile_file, const std::string& name,
-                       const std::filesystem::path& security_dir, const std::string& identity) {
+                       const std::filesystem::path& security_dir, const std::string& identity,
+                       const MemberNames& members) {
     auto* factory = DomainParticipantFactory::get_instance();
     // GDNAV_FASTDDS_LOG=warning|info: Fast DDS's own log at that verbosity (default: errors only).
     if (const char* v = std::getenv("GDNAV_FASTDDS_LOG")) {
@@ -41,12 +42,19 @@ DdsContext::DdsContext(int domain_id, const std::filesystem::path& profile_file,
         security::check_identity(security_dir, identity);
         security::apply(pq, security_dir, identity);
     }
-    participant_ = factory->create_participant(static_cast<DomainId_t>(domain_id), pq);
+    const auto user_data = announcement(members);
+    pq.user_data().data_vec(std::vector<eprosima::fastrtps::rtps::octet>(user_data.begin(), user_data.end()));
+    // The listener gets the discovery of participants only: every entity status goes to the entity's own listener or
+    // condition, as without it.
+    participant_ = factory->create_participant(static_cast<DomainId_t>(domain_id), pq, &participants_,
+                                               StatusMask::none());
     if (!participant_)
         throw std::runtime_error("cannot create DDS participant on domain " + std::to_string(domain_id) +
                                  (security_dir.empty() ? std::string()
                                                        : " with security identity '" + identity + "' from " +
                                                              security_dir.string() + " (see the Fast DDS log above)"));
+    participants_.add(participant_->guid().guidPrefix,
+                      members.empty() ? std::nullopt : std::optional<MemberNames>(members));
     register_stride_filter(*participant_);  // before any writer: writers filter for strided readers
     register_status_filter(*participant_);  // and for status readers of one member
     publisher_ = participant_->create_publisher(PUBLISHER_QOS_DEFAULT);

@@ -2,7 +2,8 @@
 // One DDS participant per process, created from the XML profiles in config/dds/ (loaded explicitly: Fast DDS 2.9
 // silently ignores FASTRTPS_DEFAULT_PROFILES_FILE unless profiles are loaded before the default QoS is read).
 // With a security directory the participant authenticates and encrypts (DDS Security). Topics and types are
-// registered once; entities are deleted in the destructor so shared memory is released.
+// registered once; entities are deleted in the destructor so shared memory is released. The participant announces
+// the members it hosts and learns what the others announce (dds/participants.hpp).
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -15,6 +16,7 @@
 #include <fastdds/dds/subscriber/Subscriber.hpp>
 #include <fastdds/dds/topic/Topic.hpp>
 
+#include "dds/participants.hpp"
 #include "msgs/message_ops.hpp"
 
 namespace gdnav::runtime {
@@ -31,8 +33,10 @@ inline constexpr const char* kLatchedReaderProfile = "gdnav_latched_reader";
 class DdsContext {
 public:
     // security_dir empty: a plain participant; else DDS Security on with `identity` (dds/security/security.hpp).
+    // members: the members this participant hosts, announced in its USER_DATA (none: it announces nothing).
     DdsContext(int domain_id, const std::filesystem::path& profile_file, const std::string& name,
-               const std::filesystem::path& security_dir = {}, const std::string& identity = {});
+               const std::filesystem::path& security_dir = {}, const std::string& identity = {},
+               const MemberNames& members = {});
     ~DdsContext();
     DdsContext(const DdsContext&) = delete;
     DdsContext& operator=(const DdsContext&) = delete;
@@ -47,6 +51,8 @@ public:
     eprosima::fastdds::dds::DataReader* status_reader(const std::string& topic, const MessageOps& ops,
                                                       const char* profile, const std::string& member);
     [[nodiscard]] eprosima::fastdds::dds::DomainParticipant* participant() const { return participant_; }
+    // The participants of the domain and the members they announced (this one's own included).
+    [[nodiscard]] const Participants& participants() const { return participants_; }
 
 private:
     eprosima::fastdds::dds::Topic* topic(const std::string& name, const MessageOps& ops);
@@ -58,6 +64,7 @@ private:
     eprosima::fastdds::dds::DataReader* create_reader(eprosima::fastdds::dds::TopicDescription* description,
                                                       const std::string& what, const char* profile,
                                                       bool best_effort = false);
+    Participants participants_;  // the participant's listener: outlives it (the destructor deletes it first)
     eprosima::fastdds::dds::DomainParticipant* participant_{nullptr};
     eprosima::fastdds::dds::Publisher* publisher_{nullptr};
     eprosima::fastdds::dds::Subscriber* subscriber_{nullptr};

@@ -31,6 +31,8 @@ struct MessageOps {
     void (*serialize)(const void* sample, std::vector<std::uint8_t>& out);
     // Decodes n bytes of CDR (with the encapsulation header) into `sample`; false when they are not a sample.
     bool (*deserialize)(const std::uint8_t* bytes, std::uint32_t n, void* sample);
+    // Simulated time of a stamped sample (0 for unstamped types).
+    double (*time_of)(const void* sample);
 };
 
 // The operations of message type T; defined by GDNAV_DECLARE_MESSAGE in the type's message library.

@@ -74,6 +74,10 @@ const MessageOps& make_ops() {
             } catch (const std::exception&) {
                 return false;  // Fast CDR throws on payloads shorter than the type
             }
+        },
+        [](const void* p) -> double {
+            if constexpr (Stamped<T>) return static_cast<const T*>(p)->stamp().t_s();
+            return 0.0;
         }};
     return ops;
 }

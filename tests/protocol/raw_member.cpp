@@ -4,6 +4,7 @@
 // u = -kp (x_hat - target) - kd v_hat. Section numbers (§) refer to docs/protocol.md.
 //   gdnav-raw-member --domain D [--run I] [--name chain_controller] [--kp 1] [--kd 1.5] [--target 0]
 //                    [--startup-timeout 120] [--protocol-version V]   (the last one only to test the refusal, §3.1)
+//                    [--nan-t-at K]   (its sample of step K with t_s NaN: to test that consumers reject it, §3.5)
 #include <unistd.h>
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -121,7 +123,7 @@ bool contains(const std::string& csv, const std::string& topic) {  // §3.1: com
 int main(int argc, char** argv) {
     std::map<std::string, std::string> a{{"--domain", ""}, {"--run", "0"}, {"--name", "chain_controller"},
                                          {"--kp", "1.0"}, {"--kd", "1.5"}, {"--target", "0.0"},
-                                         {"--startup-timeout", "120"},
+                                         {"--startup-timeout", "120"}, {"--nan-t-at", ""},
                                          {"--protocol-version", std::to_string(gdnav::msg::LOCKSTEP_PROTOCOL_VERSION)}};
     for (int i = 1; i + 1 < argc; i += 2) {
         if (!a.count(argv[i])) return std::fprintf(stderr, "unknown option %s\n", argv[i]), 2;
@@ -133,6 +135,7 @@ int main(int argc, char** argv) {
     const std::string name = a["--name"];
     const double kp = std::stod(a["--kp"]), kd = std::stod(a["--kd"]), target = std::stod(a["--target"]);
     const double startup_timeout_s = std::stod(a["--startup-timeout"]);
+    const std::uint64_t nan_at = a["--nan-t-at"].empty() ? UINT64_MAX : std::stoull(a["--nan-t-at"]);
     const auto V = static_cast<std::uint32_t>(std::stoul(a["--protocol-version"]));  // LOCKSTEP_PROTOCOL_VERSION
     const std::string kIn = "chain/estimate", kOut = "chain/control";  // the member's declared input (Lag Same), output
     std::signal(SIGINT, [](int s) { g_signal = s; });
@@ -273,7 +276,7 @@ int main(int argc, char** argv) {
             out.u_mps2(e ? -kp * (e->x_m() - target) - kd * e->v_mps() : 0.0);  // lost estimate: no command
             out.stamp().run_id(run);
             out.stamp().step(k);
-            out.stamp().t_s(t_s);
+            out.stamp().t_s(k == nan_at ? std::numeric_limits<double>::quiet_NaN() : t_s);
             out_w->write(&out);
             if (e) inbox.erase(it);
             const std::uint64_t done_every = std::max<std::uint64_t>(cfg.done_every(), 1);

@@ -1,11 +1,15 @@
 // The lockstep protocol from outside gdnav: gdnav-raw-member (raw_member.cpp, written from docs/protocol.md with the
 // raw Fast DDS API and the generated types only) replaces chain_controller in a test-chain run and reproduces the
-// all-built-in run bit for bit; announcing another protocol version gets it refused with the clock's clear error.
+// all-built-in run bit for bit; announcing another protocol version gets it refused with the clock's clear error; a
+// sample of its with a non-finite time is rejected and counted by its consumers.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <unistd.h>
+#include <yaml-cpp/yaml.h>
 
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "process_util.hpp"
@@ -77,4 +81,27 @@ TEST(RawMember, WrongProtocolVersionIsRefusedAndTheRunEndsAtTheJoinTimeout) {
     EXPECT_NE(p.run_log.find("external member 'chain_controller' did not join within 3 s"), std::string::npos) << p.run_log;
     // §5: the member hears the clock's ABORT (the clock exits 5) and exits 3.
     EXPECT_EQ(p.member_code, 3) << p.member_log;
+}
+
+TEST(RawMember, ASampleWithANonFiniteTimeIsRejectedAndCounted) {
+    // The producer's own sample of step 100 has t_s NaN: both consumers of chain/control (the plant and the recorder)
+    // reject it and step without it, as without a sample; the run completes and clock_summary.yaml counts it.
+    const auto out = temp_dir("raw-nan");
+    const Pair p = run_with_raw_member({"run", "--scenario", chain_scenario(), "--layout", "distributed", "--seed", "1"},
+                                       {"--nan-t-at", "100"}, out, 180.0);
+    ASSERT_EQ(p.run_code, 0) << p.run_log << "\n--- member:\n" << p.member_log;
+    EXPECT_EQ(p.member_code, 0) << p.member_log;
+    const YAML::Node summary = YAML::LoadFile((out / "clock_summary.yaml").string());
+    std::map<std::string, std::pair<std::uint64_t, std::uint64_t>> got;
+    for (const auto& e : summary["rejected_samples"]) {
+        EXPECT_EQ(e["topic"].as<std::string>(), "chain/control");
+        got[e["member"].as<std::string>()] = {e["not_from_producer"].as<std::uint64_t>(), e["bad_stamp"].as<std::uint64_t>()};
+    }
+    const std::map<std::string, std::pair<std::uint64_t, std::uint64_t>> want{{"chain_plant", {0, 1}}, {"recorder", {0, 1}}};
+    EXPECT_EQ(got, want) << read_file(out / "clock_summary.yaml");
+    EXPECT_NE(p.run_log.find("sample(s) with a bad stamp rejected"), std::string::npos) << p.run_log;
+    EXPECT_NE(p.run_log.find("t_s nan: t_s not finite"), std::string::npos) << p.run_log;
+    // The recording has no chain/control sample of step 100 (1999 of 2000).
+    const YAML::Node digest = YAML::LoadFile((out / "record" / "digest.yaml").string());
+    EXPECT_EQ(digest["topics"]["chain/control"]["samples"].as<std::uint64_t>(), 1999u);
 }

@@ -8,6 +8,7 @@
 
 #include <map>
 #include <memory>
+#include <ostream>
 #include <set>
 #include <string>
 #include <vector>
@@ -40,6 +41,7 @@ struct Clock::Impl {
         std::uint64_t dead_at_step{0};
         std::string dead_reason;
         std::uint32_t faults_version{0};  // fault schedule the member has adopted
+        std::string rejected;  // its latest heartbeat's count of rejected samples ("TOPIC:N:M,...", host_inbox.hpp)
         // Not in the barrier and writes nothing (e.g. the live bridge): it cannot change the run's outputs.
         [[nodiscard]] bool observer() const { return free && outputs.empty(); }
     };
@@ -104,6 +106,8 @@ struct Clock::Impl {
     }
 
     void heartbeat(double now);
+    // clock_summary.yaml's rejected_samples (from the members' heartbeats); returns their total.
+    std::uint64_t write_rejected(std::ostream& f) const;
 
     void send_tick(double now);
 

@@ -67,6 +67,10 @@ void Clock::Impl::read_status(double now) {
                 spdlog::info("member '{}' is free-running (not in the barrier; run not reproducible)", name);
         }
         if (status_in.kind() == msg::STATUS_READY) m.ready = true;
+        if (const std::string text = status_in.message().to_string();
+            (status_in.kind() == msg::STATUS_HEARTBEAT || status_in.kind() == msg::STATUS_READY) &&
+            text.rfind("rejected ", 0) == 0)
+            m.rejected = text.substr(9);
         if (status_in.kind() == msg::STATUS_MODE)
             spdlog::info("[{}] t={:.2f} s: {}", name, status_in.t_s(), status_in.message().to_string());
         if (status_in.kind() == msg::STATUS_ERROR || status_in.kind() == msg::STATUS_EXIT)

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <ostream>
 
 #include <spdlog/spdlog.h>
 #include <yaml-cpp/yaml.h>
@@ -43,7 +44,41 @@ void Clock::Impl::write_summary(bool completed, double now) {
     // timing-dependent; an observer (free, no outputs) does not.
     bool timing = !rejoined.empty();
     for (Member* m : table) timing = timing || (m->free && !m->observer()) || m->dead;
+    const std::uint64_t rejected = write_rejected(f);
     f << "reproducible: " << (timing ? "false" : "true") << "\n";
+    // Rejected samples were never used: the outputs are those of a run without them, which holds only as far as the
+    // producers were identified right (docs/protocol.md §2.5). The claim says what `reproducible` then means.
+    if (rejected > 0)
+        f << "reproducible_claim: \"as a run without the " << rejected
+          << " rejected samples (rejected_samples): samples not written by a topic's producer were never used, and a "
+             "sample with a bad stamp counted as not available at its step\"\n";
+}
+
+std::uint64_t Clock::Impl::write_rejected(std::ostream& f) const {
+    // Each member's latest heartbeat: "TOPIC:NOT_FROM_PRODUCER:BAD_STAMP,..." (dds/host/host_inbox.hpp).
+    std::string lines;
+    std::uint64_t total = 0;
+    for (const Member* m : table) {
+        std::size_t b = 0;
+        while (b < m->rejected.size()) {
+            std::size_t e = m->rejected.find(',', b);
+            if (e == std::string::npos) e = m->rejected.size();
+            const std::string entry = m->rejected.substr(b, e - b);
+            b = e + 1;
+            const std::size_t c2 = entry.rfind(':');
+            const std::size_t c1 = c2 == std::string::npos || c2 == 0 ? std::string::npos : entry.rfind(':', c2 - 1);
+            if (c1 == std::string::npos) continue;
+            const std::string foreign = entry.substr(c1 + 1, c2 - c1 - 1), bad = entry.substr(c2 + 1);
+            if (foreign.empty() || bad.empty() || foreign.find_first_not_of("0123456789") != std::string::npos ||
+                bad.find_first_not_of("0123456789") != std::string::npos)
+                continue;  // not a count this clock understands
+            total += std::stoull(foreign) + std::stoull(bad);
+            lines += "  - {member: \"" + m->name + "\", topic: \"" + entry.substr(0, c1) + "\", not_from_producer: " +
+                     foreign + ", bad_stamp: " + bad + "}\n";
+        }
+    }
+    f << "rejected_samples:" << (lines.empty() ? " []\n" : "\n" + lines);
+    return total;
 }
 
 int Clock::Impl::finish(int code, double now) {

@@ -39,7 +39,12 @@ void DdsHost::Impl::setup() {
             spdlog::warn("{}: CPU priority unchanged ({}); the observers compete with the run", who, p);
     }
     dds = std::make_unique<DdsContext>(rc.domain_id, rc.dds_profile, pname, rc.security_dir,
-                                       security::process_identity(hosted));
+                                       security::process_identity(hosted), hosted);
+    // The members gdnav starts announce themselves (dds/participants.hpp); an external one may be another vendor's.
+    inputs.identify(&dds->participants(), [this](const std::string& name) {
+        return !rc.is_external(name) &&
+               std::any_of(rc.members.begin(), rc.members.end(), [&](const MemberSpec& m) { return m.name == name; });
+    });
     control.open(*dds);
     for (Component* c : g.order) locals.push_back(make_local(c));
     host::route_locally(locals);
@@ -85,9 +90,9 @@ void DdsHost::Impl::pump() {
 
 void DdsHost::Impl::process_data(double now) {
     if (control.read_ticks(now)) inputs.apply_dead_mask(control.dead_mask());
-    const std::uint64_t run = control.timing().ri.run_index;
+    const RunInfo& ri = control.timing().ri;
     for (auto& l : locals)
-        for (host::Channel* ch : l.inputs) inputs.read(l, *ch, run);
+        for (host::Channel* ch : l.inputs) inputs.read(l, *ch, ri);
     if (in_advance) return;
     in_advance = true;
     while (advance()) {
@@ -146,6 +151,7 @@ void DdsHost::Impl::finish(int code) {
         if (!l.killed) l.comp->finish(code == kExitOk);
     }
     inputs.report_lateness(locals, rc.out_dir);
+    host::Inputs::report_rejected(locals);
     host::Observers::report(locals, control.timing().ri.steps);
 }
 

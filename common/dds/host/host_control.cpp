@@ -66,7 +66,7 @@ void ControlPlane::heartbeat(double now, const std::vector<Local>& locals) {
     const auto kind = phase_ == Phase::Ready ? msg::STATUS_READY : msg::STATUS_HEARTBEAT;
     // A rejoining member asks for its step once it is matched with the run's other members.
     const bool matched = phase_ != Phase::Announce && phase_ != Phase::Matching;
-    for (const auto& l : locals) send_status(l, kind, l.awaiting_rejoin && matched ? "rejoin" : "");
+    for (const auto& l : locals) send_status(l, kind, l.awaiting_rejoin && matched ? "rejoin" : rejected_note(l));
 }
 
 bool ControlPlane::read_control(int& code, ControlHandler& handler) {

@@ -12,6 +12,18 @@ long inbox_index(const Channel& ch, std::uint64_t next_step, std::uint64_t s) {
     return static_cast<long>(s % kInboxRing);
 }
 
+std::string rejected_note(const Local& l) {
+    std::string note;
+    for (const Channel* ch : l.inputs) {
+        if (ch->foreign.total() == 0 && ch->bad_stamp.total() == 0) continue;
+        const std::string entry = ch->port->topic() + ":" + std::to_string(ch->foreign.total()) + ":" +
+                                  std::to_string(ch->bad_stamp.total());
+        if (note.size() + entry.size() + 10 > 1024) break;  // ComponentStatus.message is a string<1024>
+        note += (note.empty() ? "rejected " : ",") + entry;
+    }
+    return note;
+}
+
 void route_locally(std::vector<Local>& locals) {
     for (auto& producer : locals)
         for (auto& o : producer.outputs) {
@@ -38,6 +50,7 @@ bool hand_over(const Route& r, const Local& consumer, const void* sample, std::u
     ch.ops->copy(ch.slot[u], sample);
     ch.slot_step[u] = s;
     ch.full[u] = true;
+    ch.bad[u] = false;
     return true;
 }
 

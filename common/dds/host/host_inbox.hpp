@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -15,6 +16,8 @@
 #include <fastdds/dds/publisher/DataWriterListener.hpp>
 #include <fastdds/dds/subscriber/DataReader.hpp>
 
+#include "dds/host/producer_check.hpp"
+#include "dds/host/warn_limit.hpp"
 #include "framework/component.hpp"
 #include "framework/faults/input_faults.hpp"
 #include "framework/lateness.hpp"
@@ -31,6 +34,7 @@ struct Channel {
     std::array<void*, kInboxRing> slot{};
     std::array<std::uint64_t, kInboxRing> slot_step{};
     std::array<bool, kInboxRing> full{};
+    std::array<bool, kInboxRing> bad{};    // its sample had a non-finite t_s: the input is not available at that step
     void* latest{nullptr};
     bool has_latest{false};
     std::vector<std::uint32_t> producers;  // member indices in the table
@@ -43,6 +47,10 @@ struct Channel {
     bool deferred{false};         // an observer's input: its reader is made at CONFIGURE (host_observers.hpp)
     bool seen{false};             // a sample has arrived (any step)
     std::uint64_t newest{0};      // the newest step of the samples arrived (an observer's lost-step test)
+    ProducerCheck producer;       // whose samples are used (from the member table)
+    WarnLimit foreign;            // samples dropped: not written by a producer of the topic
+    WarnLimit bad_stamp;          // samples rejected: non-finite t_s, or a step beyond the run or the inbox
+    WarnLimit too_far_local;      // samples of a producer of this process beyond the inbox of a local reader
     void saw(std::uint64_t s) {
         if (!seen || s > newest) newest = s;
         seen = true;
@@ -99,6 +107,10 @@ struct Local {
 inline constexpr long kOlder = -1;
 inline constexpr long kTooFar = -2;
 long inbox_index(const Channel& ch, std::uint64_t next_step, std::uint64_t s);
+
+// What member l's inputs rejected so far, for its heartbeat (docs/protocol.md §3.1): "" when nothing, else
+// "rejected TOPIC:NOT_FROM_PRODUCER:BAD_STAMP,..." for each input that rejected any.
+std::string rejected_note(const Local& l);
 
 // Connects every local output to the local inputs of its topic (call once, after all locals are set up).
 void route_locally(std::vector<Local>& locals);

@@ -1,6 +1,8 @@
 #include "dds/host/host_inputs.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
 #include <spdlog/spdlog.h>
@@ -45,6 +47,11 @@ Channel* Inputs::add(InputBase* in) {
     return channels_.back().get();
 }
 
+void Inputs::identify(const Participants* known, std::function<bool(const std::string&)> must_announce) {
+    known_ = known;
+    must_announce_ = std::move(must_announce);
+}
+
 std::vector<DataReader*> Inputs::readers() const {
     std::vector<DataReader*> v;
     for (const auto& c : channels_)
@@ -56,13 +63,18 @@ void Inputs::configure(const Local& l, const std::vector<msg::MemberInfo>& table
                        const faults::FaultSchedule& schedule, const RunInfo& ri) {
     for (Channel* ch : l.inputs) {
         ch->producers.clear();
+        MemberNames names;
+        std::vector<bool> announce;
         for (std::uint32_t i = 0; i < table.size(); ++i) {
             const auto outs = split_topics(table[i].outputs().to_string());
             if (std::find(outs.begin(), outs.end(), ch->port->topic()) != outs.end()) {
                 ch->producers.push_back(i);
                 ch->free = ch->free || table[i].free_running();
+                names.push_back(table[i].name().to_string());
+                announce.push_back(must_announce_ && must_announce_(names.back()));
             }
         }
+        ch->producer.configure(std::move(names), std::move(announce), known_);
         if (!schedule.empty()) ch->faults = input_faults(*ch, schedule, table, ri);
         if (ch->producers.empty()) {
             spdlog::warn("member '{}': no member of this run produces '{}'; input treated as lost", l.comp->name(),
@@ -83,17 +95,29 @@ bool Inputs::matched() const {
     return true;
 }
 
-void Inputs::read(Local& l, Channel& ch, std::uint64_t run) {
+void Inputs::read(Local& l, Channel& ch, const RunInfo& ri) {
     if (ch.reader == nullptr) return;  // an observer's input before CONFIGURE (host_observers.hpp)
     SampleInfo info;
     while (ch.reader->take_next_sample(ch.scratch, &info) == ReturnCode_t::RETCODE_OK) {
-        if (!info.valid_data || ch.ops->run_of(ch.scratch) != run) continue;
+        if (!info.valid_data || ch.ops->run_of(ch.scratch) != ri.run_index) continue;
+        if (!ch.producer.configured()) continue;  // before the member table no step can need a sample
+        const GuidPrefix& from = info.sample_identity.writer_guid().guidPrefix;
+        const std::uint64_t s = ch.ops->step_of(ch.scratch);
+        if (!ch.producer.accepts(from)) {
+            reject_foreign(l, ch, from, s);
+            continue;
+        }
+        const double t_s = ch.ops->time_of(ch.scratch);
+        const bool finite = std::isfinite(t_s);
+        if (s >= ri.steps || (ch.free && !finite)) {
+            reject_stamp(l, ch, s, t_s, s >= ri.steps ? "a step beyond the run" : "t_s not finite");
+            continue;
+        }
         if (ch.free) {
             ch.ops->copy(ch.latest, ch.scratch);
             ch.has_latest = true;
             continue;
         }
-        const std::uint64_t s = ch.ops->step_of(ch.scratch);
         if (l.observer) ch.saw(s);  // only an observer's lost-step test reads it
         long at = inbox_index(ch, l.next_step, s);
         if (at == kOlder) continue;
@@ -102,20 +126,40 @@ void Inputs::read(Local& l, Channel& ch, std::uint64_t run) {
             at = inbox_index(ch, l.next_step, s);
         }
         if (at == kTooFar) {
-            warn_too_far(l, ch, s);
+            if (!l.killed) reject_stamp(l, ch, s, t_s, "a step too far ahead");  // a killed member reads nothing
             continue;
         }
         const auto i = static_cast<std::size_t>(at);
         std::swap(ch.slot[i], ch.scratch);
         ch.slot_step[i] = s;
         ch.full[i] = true;
+        ch.bad[i] = !finite;  // kept, so that the step does not wait for it: the input is not available then
+        if (!finite) reject_stamp(l, ch, s, t_s, "t_s not finite");
     }
 }
 
-void Inputs::warn_too_far(const Local& l, const Channel& ch, std::uint64_t s) {
+void Inputs::reject_foreign(const Local& l, Channel& ch, const GuidPrefix& from, std::uint64_t s) {
+    if (const std::uint64_t n = ch.foreign.occur(steady_now_s())) {
+        std::ostringstream who;
+        who << from;
+        spdlog::warn("member '{}', input '{}': {} sample(s) not written by its producer ({}) dropped, {} in all (the "
+                     "last: step {}, from participant {})",
+                     l.comp->name(), ch.port->topic(), n, ch.producer.names(), ch.foreign.total(), s, who.str());
+    }
+}
+
+void Inputs::reject_stamp(const Local& l, Channel& ch, std::uint64_t s, double t_s, const char* why) {
+    if (const std::uint64_t n = ch.bad_stamp.occur(steady_now_s()))
+        spdlog::warn("member '{}', input '{}': {} sample(s) with a bad stamp rejected, {} in all (the last: step {}, "
+                     "t_s {}: {}; its step is {})",
+                     l.comp->name(), ch.port->topic(), n, ch.bad_stamp.total(), s, t_s, why, l.next_step);
+}
+
+void Inputs::warn_too_far(const Local& l, Channel& ch, std::uint64_t s) {
     if (l.killed) return;  // a member killed by a fault does not read its inputs
-    spdlog::warn("input '{}': sample of step {} is too far ahead of step {}; dropped", ch.port->topic(), s,
-                 l.next_step);
+    if (const std::uint64_t n = ch.too_far_local.occur(steady_now_s()))
+        spdlog::warn("input '{}': {} sample(s) too far ahead of step {} dropped, {} in all (the last: step {})",
+                     ch.port->topic(), n, l.next_step, ch.too_far_local.total(), s);
 }
 
 bool Inputs::ready(const Local& l, std::uint64_t k) const {
@@ -149,6 +193,10 @@ bool Inputs::ready(const Local& l, std::uint64_t k) const {
         }
         const std::size_t i = need % kInboxRing;
         if (!ch->full[i] || ch->slot_step[i] != need) return false;
+        if (ch->bad[i]) {  // rejected (a bad stamp): not available at this step, as a dropped sample
+            ch->port->bind(nullptr);
+            continue;
+        }
         if (ch->faults) {
             const auto d = ch->faults->apply(need, ch->slot[i]);
             ch->port->set_lost(d.lost);
@@ -207,6 +255,16 @@ void Inputs::extend_faults(const faults::FaultSchedule& schedule, std::size_t fi
         else
             ch->faults = input_faults(*ch, schedule, table, ri);
     }
+}
+
+void Inputs::report_rejected(const std::vector<Local>& locals) {
+    for (const auto& l : locals)
+        for (const Channel* ch : l.inputs)
+            if (ch->foreign.total() > 0 || ch->bad_stamp.total() > 0)
+                spdlog::warn("member '{}', input '{}': rejected {} sample(s) not written by its producer ({}) and {} "
+                             "with a bad stamp",
+                             l.comp->name(), ch->port->topic(), ch->foreign.total(), ch->producer.names(),
+                             ch->bad_stamp.total());
 }
 
 void Inputs::report_lateness(const std::vector<Local>& locals, const std::string& out_dir) const {

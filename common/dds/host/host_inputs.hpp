@@ -2,7 +2,10 @@
 // The DDS host's inputs: the inbox of every input port of its members (host_inbox.hpp), filled from DDS by step,
 // bound to the ports when a step runs; inputs whose producers are all dead are lost, and found again when a
 // producer rejoins; faults scheduled on an input pass through it; free-running inputs keep their lateness.
+// Only the producers' samples are used (producer_check.hpp); the others, and samples with a bad stamp, are rejected
+// and counted (docs/protocol.md §3.5).
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -21,6 +24,9 @@ public:
     Inputs(const Inputs&) = delete;
     Inputs& operator=(const Inputs&) = delete;
 
+    // Where the participants of the domain are known, and which producers are started by gdnav (they announce
+    // themselves: producer_check.hpp). Call before configure().
+    void identify(const Participants* known, std::function<bool(const std::string&)> must_announce);
     // The inbox of input port `in`, its samples allocated; its reader is set by the caller.
     Channel* add(InputBase* in);
     // Every reader made so far.
@@ -33,14 +39,16 @@ public:
     // Whether every input's reader is matched with all its producers.
     [[nodiscard]] bool matched() const;
 
-    // The samples that arrived for member l's input `ch` (of run `run`), into its inbox by step.
-    void read(Local& l, Channel& ch, std::uint64_t run);
+    // The samples that arrived for member l's input `ch` (of run ri), into its inbox by step; others' samples and
+    // bad stamps are rejected.
+    void read(Local& l, Channel& ch, const RunInfo& ri);
     // Binds member l's inputs for step k. False when a sample it waits for is not here yet.
     bool ready(const Local& l, std::uint64_t k) const;
     // Free inputs of a step about to run: how many steps old the sample used is (once per executed step).
     void record_lateness(const Local& l, std::uint64_t k) const;
-    // A sample of step s beyond member l's inbox: dropped, with a warning.
-    static void warn_too_far(const Local& l, const Channel& ch, std::uint64_t s);
+    // A sample of step s of a producer in this process beyond the inbox of member l's input ch: dropped, with a
+    // (rate-limited) warning.
+    static void warn_too_far(const Local& l, Channel& ch, std::uint64_t s);
 
     // The clock declared producers dead (bit = table index): inputs whose producers are all dead are lost.
     void apply_dead_mask(std::uint64_t dead_mask);
@@ -52,9 +60,17 @@ public:
 
     // Free-running inputs (hardware-in-the-loop): summary lines and <out>/lateness/<member>.yaml.
     void report_lateness(const std::vector<Local>& locals, const std::string& out_dir) const;
+    // The end of the run: one line per input that rejected samples, with the totals.
+    static void report_rejected(const std::vector<Local>& locals);
 
 private:
+    // A sample of a participant that is not a producer of ch's topic (dropped); one with a bad stamp (`why`).
+    static void reject_foreign(const Local& l, Channel& ch, const GuidPrefix& from, std::uint64_t s);
+    static void reject_stamp(const Local& l, Channel& ch, std::uint64_t s, double t_s, const char* why);
+
     bool free_running_{false};
+    const Participants* known_{nullptr};
+    std::function<bool(const std::string&)> must_announce_;
     std::vector<std::unique_ptr<Channel>> channels_;
 };
 
