@@ -37,7 +37,18 @@ int cli_main(int argc, char** argv, const runtime::ComponentRegistry& reg, const
         CLI::App* s = f(app, ctx, r);
         subs.emplace_back(s, std::move(r));
     }
-    CLI11_PARSE(app, argc, argv);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        if (e.get_exit_code() == 0) return app.exit(e);  // --help: the help text
+        // A usage error is bad input like any other: one line and exit code 2 (CLI11's own codes, e.g. 105 for a
+        // failed check or 109 for an extra argument, are not in gdnav's exit-code table).
+        if (!spdlog::get("gdnav")) setup_logging("gdnav", "info");
+        std::string where = program_name;
+        for (const CLI::App* s : app.get_subcommands()) where += " " + s->get_name();
+        spdlog::error("{} (usage: {} --help)", e.what(), where);
+        return runtime::kExitConfig;
+    }
     try {
         for (auto& [s, r] : subs)
             if (s->parsed()) return r();

@@ -14,6 +14,7 @@
 #include "framework/graph.hpp"
 #include "launch/launcher.hpp"
 #include "framework/lockstep.hpp"
+#include "dds/process/process_exit.hpp"
 #include "dds/process/process_signals.hpp"
 #include "framework/topic_types.hpp"
 
@@ -162,7 +163,7 @@ CLI::App* add_component_command(CLI::App& app, CliContext& ctx, CommandRunner& r
     sub->add_option("--config", a->config, "run config (YAML)")->required();
     sub->add_flag("--free-running", a->free_running, "not in the lockstep barrier; inputs use the latest samples");
     sub->add_flag("--rejoin", a->rejoin, "come back into a running run after being declared dead (docs/faults.md)");
-    run = [a, &ctx]() {
+    run = [a, &ctx]() -> int {
         setup_logging(a->names, ctx.log_level);
         install_stop_signal_handlers();
         const RunConfig rc = RunConfig::load(a->config);
@@ -171,8 +172,13 @@ CLI::App* add_component_command(CLI::App& app, CliContext& ctx, CommandRunner& r
         ho.free_running = a->free_running;
         ho.rejoin = a->rejoin;
         ho.rebuild = [&rc, &ctx](const std::string& name) { return rc.build_one(ctx.registry, name); };
-        DdsHost host(rc, std::move(members), ho);
-        return host.run();
+        keep_participants_until_exit();  // leave without a DISPOSE (dds/process/process_exit.hpp)
+        int code = kExitOk;
+        {
+            DdsHost host(rc, std::move(members), ho);
+            code = host.run();
+        }  // every component finished and destroyed: its files are complete
+        exit_keeping_participants(code);
     };
     return sub;
 }
@@ -181,12 +187,17 @@ CLI::App* add_clock_command(CLI::App& app, CliContext& ctx, CommandRunner& run) 
     auto config = std::make_shared<std::string>();
     auto* sub = app.add_subcommand("clock", "run the lockstep clock of a run");
     sub->add_option("--config", *config, "run config (YAML)")->required();
-    run = [config, &ctx]() {
+    run = [config, &ctx]() -> int {
         setup_logging(kClockName, ctx.log_level);
         install_stop_signal_handlers();
         const RunConfig rc = RunConfig::load(*config);
-        Clock clock(rc, ClockOptions{});
-        return clock.run();
+        keep_participants_until_exit();  // leave without a DISPOSE (dds/process/process_exit.hpp)
+        int code = kExitOk;
+        {
+            Clock clock(rc, ClockOptions{});
+            code = clock.run();
+        }  // clock_summary.yaml and faults.yaml are written
+        exit_keeping_participants(code);
     };
     return sub;
 }

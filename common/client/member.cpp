@@ -124,6 +124,8 @@ int Member::run() {
     adapter_ = nullptr;  // destroyed with the host
     if (code == runtime::kExitOk)
         spdlog::info("member '{}': run complete", opt_.name);
+    else if (const std::string why = host.abort_reason(); !why.empty())
+        spdlog::error("member '{}': ended with exit code {}: the clock aborted the run: {}", opt_.name, code, why);
     else
         spdlog::error("member '{}': ended with exit code {}", opt_.name, code);
     return code;

@@ -11,6 +11,7 @@
 #include <fastdds/dds/topic/TypeSupport.hpp>
 #include <spdlog/spdlog.h>
 
+#include "dds/process/process_exit.hpp"
 #include "dds/security/security.hpp"
 #include "dds/filters/status_filter.hpp"
 #include "dds/filters/stride_filter.hpp"
@@ -63,10 +64,12 @@ DdsContext::DdsContext(int domain_id, const std::filesystem::path& profile_file,
 }
 
 DdsContext::~DdsContext() {
-    if (participant_) {
-        participant_->delete_contained_entities();
-        DomainParticipantFactory::get_instance()->delete_participant(participant_);
-    }
+    if (!participant_) return;
+    // Readers and writers go in any case (no listener of ours can be called after this); the participant itself
+    // stays in a process that keeps it until it ends, which then leaves without a DISPOSE
+    // (dds/process/process_exit.hpp).
+    participant_->delete_contained_entities();
+    if (!participants_kept()) DomainParticipantFactory::get_instance()->delete_participant(participant_);
 }
 
 Topic* DdsContext::topic(const std::string& name, const MessageOps& ops) {

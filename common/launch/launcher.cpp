@@ -18,6 +18,7 @@
 #include "framework/lockstep.hpp"
 #include "dds/process/process_signals.hpp"
 #include "dds/security/security.hpp"
+#include "launch/run_outcome.hpp"
 #include "launch/shm_cleanup.hpp"
 
 namespace gdnav::runtime {
@@ -178,6 +179,8 @@ void choose_domain(RunConfig& rc) {
 
 fs::path write_run_yaml(const RunConfig& rc, const LaunchOptions& opt) {
     fs::create_directories(rc.out_dir);
+    // The closing line reads the clock's summary of this run: none of an earlier run in this folder may stand in.
+    if (opt.start_clock) fs::remove(fs::path(rc.out_dir) / "clock_summary.yaml");
     const fs::path run_yaml = fs::path(rc.out_dir) / "run.yaml";
     std::ofstream f(run_yaml);
     f << "# Resolved run configuration written by gdnav run (layout " << opt.layout << ")\n" << rc.to_yaml();
@@ -258,12 +261,18 @@ Outcome supervise(std::vector<Child>& children, const RunConfig& rc) {
     Outcome out;
     auto on_exit = [&](Child& c) {
         const bool ok = WIFEXITED(c.status) && WEXITSTATUS(c.status) == 0;
-        if (c.name == kClockName)
-            out.clock_code = WIFEXITED(c.status) ? WEXITSTATUS(c.status) : 128 + WTERMSIG(c.status);
-        if (!ok) {
-            out.failures.push_back(c.name + " (" + describe(c.status) + ")");
-            spdlog::warn("process '{}' (pid {}) ended: {}", c.name, c.pid, describe(c.status));
+        const bool clock = c.name == kClockName;
+        if (clock) out.clock_code = WIFEXITED(c.status) ? WEXITSTATUS(c.status) : 128 + WTERMSIG(c.status);
+        if (ok) return;
+        // A member that ended with 3 only followed the clock's ABORT, and the clock's own exit code is on the
+        // closing line: neither is a cause of its own (logged at debug level).
+        const bool follows_clock = WIFEXITED(c.status) && (clock || WEXITSTATUS(c.status) == kExitAborted);
+        if (follows_clock) {
+            spdlog::debug("process '{}' (pid {}) ended: {}", c.name, c.pid, describe(c.status));
+            return;
         }
+        out.failures.push_back(c.name + " (" + describe(c.status) + ")");
+        spdlog::warn("process '{}' (pid {}) ended: {}", c.name, c.pid, describe(c.status));
     };
     while (any_running(children)) {
         reap(children, on_exit);
@@ -307,13 +316,17 @@ int exit_code(const Outcome& out, const RunConfig& rc, const LaunchOptions& opt)
         spdlog::info("host slice completed; results in {}", rc.out_dir);
         return kExitOk;
     }
+    const ClockSummary summary = read_clock_summary(fs::path(rc.out_dir) / "clock_summary.yaml");
     if (out.clock_code != kExitOk) {
-        spdlog::error("run failed: the clock ended with code {}{}", out.clock_code,
-                      out.failures.empty() ? "" : "; failed processes: " + join(out.failures, ", "));
-        return out.clock_code > 0 ? out.clock_code : 1;
+        const int code = out.clock_code > 0 ? out.clock_code : 1;
+        spdlog::error("{}", failed_run_line(code, summary, out.failures));
+        return code;
     }
-    if (!out.failures.empty()) spdlog::warn("run completed without: {}", join(out.failures, ", "));
-    spdlog::info("run completed; results in {}", rc.out_dir);
+    const std::string line = completed_run_line(summary, out.failures, rc.out_dir);
+    if (summary.dead.empty() && out.failures.empty())
+        spdlog::info("{}", line);
+    else
+        spdlog::warn("{}", line);
     return kExitOk;
 }
 

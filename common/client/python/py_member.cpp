@@ -78,6 +78,7 @@ void PyMember::step(const client::StepInfo& s) {
     if (error_) return;  // leaving the run: the outputs keep their last values
     const auto t0 = std::chrono::steady_clock::now();
     const double cpu0 = thread_cpu_us();
+    std::string failure;
     {
         // The host calls the step from whichever thread received the sample (its own or a Fast DDS listener
         // thread). Each listener thread keeps its Python thread state for the whole run (deleted by run()): without
@@ -96,16 +97,17 @@ void PyMember::step(const client::StepInfo& s) {
         } catch (py::error_already_set& e) {
             error_where_ = "in the step callback of member '" + opt_.name + "' at step " + std::to_string(s.k) +
                            " (t = " + std::to_string(s.t_s) + " s)";
-            spdlog::error("Python exception {}: {}; leaving the run", error_where_, e.what());
+            failure = "Python exception in the step callback: " + std::string(e.what());
             error_.emplace(std::move(e));
-            // The host polls the runtime's stop flag: it leaves the run the regular way (tells the clock, which
-            // declares this member dead, and calls finish), and run() then re-raises the exception.
-            std::raise(SIGTERM);
         }
         state_->in_step = false;
     }
     const double cpu_us = thread_cpu_us() - cpu0;
     cost_.add(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count(), cpu_us);
+    // The host leaves the run the regular way: it logs the error's first line, sends it to the clock
+    // (STATUS_ERROR: the clock declares this member dead with that reason), finishes and returns exit code 1;
+    // run() then re-raises the Python exception.
+    if (!failure.empty()) throw std::runtime_error(failure);
 }
 
 int PyMember::run() {

@@ -33,10 +33,18 @@ void Clock::Impl::write_summary(bool completed, double now) {
     f << "steps_done: " << (completed ? rc.info.steps : current) << "\n";
     f << "wall_s: " << wall << "\n";
     f << "steps_per_s: " << (wall > 0 ? static_cast<double>(completed ? rc.info.steps : current) / wall : 0.0) << "\n";
-    if (!completed) f << "abort_reason: \"" << abort_reason << "\"\n";
+    // Reasons may hold any text (a member's exception): quoted by the YAML emitter.
+    auto quoted = [](const std::string& text) {
+        YAML::Emitter e;
+        e << YAML::DoubleQuoted << text;
+        return std::string(e.c_str());
+    };
+    if (!completed) f << "abort_reason: " << quoted(abort_reason) << "\n";
     f << "dead_members:\n";
     for (Member* m : table)
-        if (m->dead) f << "  - {name: " << m->name << ", step: " << m->dead_at_step << "}\n";
+        if (m->dead)
+            f << "  - {name: " << m->name << ", step: " << m->dead_at_step << ", reason: " << quoted(m->dead_reason)
+              << "}\n";
     f << "rejoined_members: [";
     for (std::size_t i = 0; i < rejoined.size(); ++i) f << (i ? ", " : "") << rejoined[i];
     f << "]\n";

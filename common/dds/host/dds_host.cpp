@@ -13,6 +13,10 @@
 
 namespace gdnav::runtime {
 
+namespace {
+constexpr int kExitStepFailed = 1;  // "internal error" (docs/protocol.md §5): a member's step threw
+}  // namespace
+
 using namespace eprosima::fastdds::dds;
 using eprosima::fastrtps::Duration_t;
 
@@ -107,6 +111,11 @@ bool DdsHost::Impl::tick_over(int& code) {
         code = kExitInterrupted;
         return false;
     }
+    if (!step_error.empty()) {
+        spdlog::error("{}; leaving the run (exit code {})", step_error, kExitStepFailed);
+        code = kExitStepFailed;
+        return false;
+    }
     if (!control.read_control(code, *this)) return false;
     if (not_in_table) {
         code = kExitStartup;
@@ -147,7 +156,10 @@ int DdsHost::Impl::loop() {
 
 void DdsHost::Impl::finish(int code) {
     for (auto& l : locals) {
-        if (code != kExitOk) control.send_status(l, msg::STATUS_EXIT, "exit code " + std::to_string(code));
+        if (!step_error.empty())
+            control.send_status(l, msg::STATUS_ERROR, step_error);  // the clock's reason names the cause
+        else if (code != kExitOk)
+            control.send_status(l, msg::STATUS_EXIT, "exit code " + std::to_string(code));
         if (!l.killed) l.comp->finish(code == kExitOk);
     }
     inputs.report_lateness(locals, rc.out_dir);
@@ -163,5 +175,7 @@ DdsHost::DdsHost(const RunConfig& rc, std::vector<std::unique_ptr<Component>> me
 DdsHost::~DdsHost() = default;
 
 int DdsHost::run() { return impl_->loop(); }
+
+std::string DdsHost::abort_reason() const { return impl_->control.abort_reason(); }
 
 }  // namespace gdnav::runtime

@@ -31,6 +31,8 @@ public:
     DdsHost& operator=(const DdsHost&) = delete;
     // Runs until STOP / ABORT / lost clock / signal. Returns the process exit code (lockstep.hpp).
     int run();
+    // After run(): the reason the clock gave with its ABORT ("" when it sent none).
+    [[nodiscard]] std::string abort_reason() const;
 
 private:
     struct Impl;

@@ -95,7 +95,10 @@ bool ControlPlane::read_control(int& code, ControlHandler& handler) {
                 code = kExitOk;
                 return false;
             case msg::RUN_ABORT:
-                spdlog::error("run aborted by the clock: {}", control_.reason().to_string());
+                // The clock logs the reason and the launcher's last line repeats it: each member's copy only at
+                // debug level (an external member's owner gets it from DdsHost::abort_reason()).
+                abort_reason_ = control_.reason().to_string();
+                spdlog::debug("run aborted by the clock: {}", abort_reason_);
                 code = kExitAborted;
                 return false;
             default:

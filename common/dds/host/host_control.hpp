@@ -86,6 +86,8 @@ public:
     [[nodiscard]] std::uint64_t dead_mask() const { return dead_mask_; }
     // Member i came back: its old dead bit no longer counts.
     void revive(std::uint32_t i);
+    // The reason of the clock's ABORT ("" when none came).
+    [[nodiscard]] const std::string& abort_reason() const { return abort_reason_; }
 
 private:
     bool configure(int& code, ControlHandler& handler);
@@ -115,6 +117,7 @@ private:
     double start_s_{0.0};
     double next_heartbeat_s_{0.0};
     std::string host_id_{host_identity()};
+    std::string abort_reason_;
 
     msg::Tick tick_;
     msg::RunControl control_;

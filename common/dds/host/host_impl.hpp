@@ -53,6 +53,8 @@ struct DdsHost::Impl final : host::ControlHandler {
     bool in_advance{false};
     bool not_in_table{false};
     bool closing{false};
+    // A member's step threw: this process leaves the run with exit code 1, telling the clock why (STATUS_ERROR).
+    std::string step_error;
 
     Impl(const RunConfig& r, std::vector<std::unique_ptr<Component>> m, HostOptions o)
         : rc(r), opt(std::move(o)), owned(std::move(m)) {}
@@ -87,7 +89,7 @@ struct DdsHost::Impl final : host::ControlHandler {
 
     // Steps every local member that can; returns true if any stepped.
     bool advance();
-    // Member l computes step k (its inputs are bound).
+    // Member l computes step k (its inputs are bound). An exception from the member sets step_error.
     void step(host::Local& l, std::uint64_t k);
     // A local member's output of step k: into the inboxes of the local readers, and on DDS if anyone outside reads it.
     void publish(host::Output& o, std::uint64_t k);

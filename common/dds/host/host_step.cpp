@@ -6,6 +6,7 @@
 namespace gdnav::runtime {
 
 bool DdsHost::Impl::advance() {
+    if (!step_error.empty()) return false;  // leaving the run
     bool any = false;
     const host::RunTiming& t = control.timing();
     for (auto& l : locals) {
@@ -27,6 +28,7 @@ bool DdsHost::Impl::advance() {
             }
             inputs.record_lateness(l, k);
             step(l, k);
+            if (!step_error.empty()) return false;
             ++l.next_step;
             if (l.barrier && ((k + 1) % t.done_every == 0 || k + 1 == t.ri.steps)) control.send_done(l, k);
             any = true;
@@ -38,7 +40,16 @@ bool DdsHost::Impl::advance() {
 void DdsHost::Impl::step(host::Local& l, std::uint64_t k) {
     const RunInfo& ri = control.timing().ri;
     const StepContext ctx{k, ri.time_of(k), ri.dt_s, k + 1 == ri.steps};
-    l.comp->step(ctx);
+    try {
+        l.comp->step(ctx);
+    } catch (const std::exception& e) {
+        // Not into the caller (it may be a Fast DDS listener thread): the main loop ends the run for this process.
+        std::string what = e.what();
+        what = what.substr(0, what.find('\n'));  // one line (a Python error carries its traceback)
+        step_error = fmt::format("member '{}' failed at step {} (t = {:.2f} s): {}", l.comp->name(), k, ctx.t_s, what)
+                         .substr(0, 1000);  // ComponentStatus.message holds 1024 characters
+        return;
+    }
     for (auto& o : l.outputs) {
         o.port->ops().set_stamp(o.port->data(), ri.run_index, k, ctx.t_s);
         publish(o, k);

@@ -31,6 +31,27 @@ std::vector<std::string> split(const std::string& line) {
     return out;
 }
 
+// A number as C's strtod reads it in the C locale ('.' decimal point), whole field: an optional sign, then a
+// decimal form (12, -1.5, .5, 2e-3) or a hexadecimal one (0x1e, -0X1.8p1). from_chars, not strtod: strtod follows
+// the process's locale. NaN and infinity are parsed here and refused by the caller.
+bool parse_number(const std::string& f, double& v) {
+    const char* b = f.data();
+    const char* e = f.data() + f.size();
+    const bool negative = b != e && *b == '-';
+    if (b != e && (*b == '+' || *b == '-')) ++b;
+    if (b == e || *b == '+' || *b == '-') return false;  // from_chars would take a second sign
+    auto format = std::chars_format::general;
+    if (e - b > 2 && b[0] == '0' && (b[1] == 'x' || b[1] == 'X')) {
+        b += 2;
+        if (*b == '+' || *b == '-') return false;
+        format = std::chars_format::hex;
+    }
+    const auto r = std::from_chars(b, e, v, format);
+    if (r.ec != std::errc() || r.ptr != e) return false;
+    if (negative) v = -v;
+    return true;
+}
+
 std::string join(const std::vector<std::string>& v) {
     std::string s;
     for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
@@ -81,11 +102,7 @@ CsvTable read_csv(const std::filesystem::path& path, const std::vector<std::stri
             const std::string& f = fields[i];
             const std::string& col = columns[slot[i]];
             double v = 0.0;
-            const char* b = f.data();
-            const char* e = f.data() + f.size();
-            if (!f.empty() && *b == '+') ++b;
-            const auto r = std::from_chars(b, e, v);
-            if (f.empty() || r.ec != std::errc() || r.ptr != e) fail(n, "column '" + col + "': '" + f + "' is not a number");
+            if (!parse_number(f, v)) fail(n, "column '" + col + "': '" + f + "' is not a number");
             if (!std::isfinite(v)) fail(n, "column '" + col + "': " + f + " (NaN and infinite values are not allowed)");
             t.values[base + slot[i]] = v;
         }

@@ -70,7 +70,8 @@ TEST(PythonMember, BindingsNameTopicFieldAndSizeInErrors) {
 }
 
 TEST(PythonMember, ExceptionInTheStepCallbackEndsTheMemberNotTheRun) {
-    // A member that raises at step 300: it leaves with the Python traceback and exit 1; the clock declares it dead
+    // A member that raises at step 300: it leaves with the Python traceback and exit 1 after telling the clock
+    // the exception's text (STATUS_ERROR); the clock declares it dead
     // and the run (which does not list nav_att as essential) completes without it, well before the timeouts.
     const fs::path out = temp_dir("pyraise");
     const std::string domain = fresh_domain();
@@ -90,6 +91,14 @@ TEST(PythonMember, ExceptionInTheStepCallbackEndsTheMemberNotTheRun) {
     EXPECT_NE(member_log.find("in the step callback of member 'nav_att' at step 300"), std::string::npos) << member_log;
     EXPECT_EQ(run_code, 0) << run_log;
     EXPECT_NE(run_log.find("member 'nav_att' declared dead"), std::string::npos) << run_log;
+    // The exception's text reaches the clock (STATUS_ERROR) and the run's last line, not "exit code 130".
+    std::string last = run_log.substr(0, run_log.find_last_not_of('\n') + 1);
+    last = last.substr(last.rfind('\n') + 1);
+    EXPECT_NE(last.find("run completed without: nav_att (declared dead at step"), std::string::npos) << run_log;
+    EXPECT_NE(last.find("Python exception in the step callback: ZeroDivisionError: deliberate failure at step 300"),
+              std::string::npos)
+        << run_log;
+    EXPECT_EQ(run_log.find("exit code 130"), std::string::npos) << run_log;
 }
 
 TEST(PythonMember, ComplementaryFilterReplacesNavAttAndFliesScenario2) {

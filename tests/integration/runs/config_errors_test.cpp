@@ -1,6 +1,7 @@
 // Malformed configs: non-zero exit, one clear error line naming file and key, and nothing started.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 
 #include <yaml-cpp/yaml.h>
@@ -102,4 +103,44 @@ TEST(ConfigErrors, RunOverridesAreValidatedAndApplied) {
         EXPECT_EQ(doc["components"]["sensors_inertial"]["gyr_grade"].as<std::string>(), "worse");
         EXPECT_EQ(doc["components"]["flight_physics"]["wind"]["speed_end_mps"].as<double>(), 0.0);
     }
+}
+
+// Usage errors are bad input like any other: one line and exit code 2 (not CLI11's own 105, 106 or 109).
+TEST(ConfigErrors, UsageErrorsExitTwoWithOneLine) {
+    const std::vector<std::vector<std::string>> cases{
+        {GDNAV_GDNAV_EXE, "run", "--layout", "bogus"},
+        {GDNAV_GDNAV_EXE, "run", "an_extra_argument"},
+        {GDNAV_GDNAV_EXE, "validate"},
+        // No run's step is shorter than 1e-4 s (run.dt_s): a shorter fault duration is refused before any DDS.
+        {GDNAV_GDNAV_EXE, "fault", "--domain", "10", "--target", "nav_att", "--kind", "drop", "--for", "1e-6"},
+        {GDNAV_GDNAV_EXE},
+    };
+    for (const auto& argv : cases) {
+        const Result r = run(argv, 30.0);
+        SCOPED_TRACE(argv.size() > 1 ? argv[1] : "no subcommand");
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+        EXPECT_NE(r.output.find("error"), std::string::npos) << r.output;
+    }
+    EXPECT_EQ(run({GDNAV_GDNAV_EXE, "run", "--help"}, 30.0).exit_code, 0);
+}
+
+// An external member that never joins: the run's last line states the clock's reason and the exit code; the
+// members' copies of the abort are not errors (debug level).
+TEST(ConfigErrors, AbsentExternalMemberIsTheCauseOnTheLastLine) {
+    const auto dir = temp_dir("absent_external");
+    constexpr const char* kDomain = "10";  // of this test alone (integration tests run one at a time)
+    const Result r = run({GDNAV_GDNAV_EXE, "run", "--scenario", "paper2", "--layout", "distributed", "--domain", kDomain,
+                          "--steps", "200", "--set", "run.external=[nav_att]", "--set", "run.join_timeout_s=2", "--out",
+                          (dir / "out").string()},
+                         90.0);
+    EXPECT_EQ(r.exit_code, 5) << r.output;
+    std::string last = r.output.substr(0, r.output.find_last_not_of('\n') + 1);
+    last = last.substr(last.rfind('\n') + 1);
+    EXPECT_NE(last.find("run failed (exit code 5): external member 'nav_att' did not join within 2 s (DDS domain 10"),
+              std::string::npos)
+        << r.output;
+    std::size_t errors = 0;
+    for (std::size_t p = r.output.find("error:"); p != std::string::npos; p = r.output.find("error:", p + 1)) ++errors;
+    EXPECT_EQ(errors, 2u) << r.output;  // the clock's own line and the last line
 }

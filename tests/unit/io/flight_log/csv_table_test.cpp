@@ -77,5 +77,25 @@ TEST(CsvTable, ErrorsAreOneLineNamingFileLineAndColumn) {
               "config error: " + (t.path() / "none.csv").string() + ": cannot open file");
 }
 
+// Every form C's strtod reads in the C locale, whole field: decimal and hexadecimal (0x1e = 30, 0x1.8p1 = 1.5 * 2 =
+// 3), with an optional sign; a second sign, a bare prefix or trailing characters are not numbers.
+TEST(CsvTable, NumbersInEveryStrtodForm) {
+    test::TempDir t;
+    const fs::path f = t.path() / "n.csv";
+    std::ofstream(f) << "a,b,c,d,e,f\n0x1e,-0X1.8p1,+.5,2e-3,-0x0.1,0X10P-4\n";
+    const CsvTable table = read_csv(f, {"a", "b", "c", "d", "e", "f"});
+    EXPECT_EQ(table.at(0, 0), 30.0);
+    EXPECT_EQ(table.at(0, 1), -3.0);
+    EXPECT_EQ(table.at(0, 2), 0.5);
+    EXPECT_EQ(table.at(0, 3), 0.002);
+    EXPECT_EQ(table.at(0, 4), -0.0625);
+    EXPECT_EQ(table.at(0, 5), 1.0);
+    const std::string at = "config error: " + f.string() + ":2: column 'a': '";
+    for (const std::string bad : {"0x", "--1", "+-1", "0x-1", "0x+1", "1e", "0x1g", "x1", "1.5 2"}) {
+        std::ofstream(f, std::ios::trunc) << "a\n" << bad << "\n";
+        EXPECT_EQ(error_of(f, {"a"}), at + bad + "' is not a number") << bad;
+    }
+}
+
 }  // namespace
 }  // namespace gdnav::app
