@@ -44,6 +44,8 @@ void Clock::Impl::write_summary(bool completed, double now) {
     bool timing = !rejoined.empty();
     for (Member* m : table) timing = timing || (m->free && !m->observer()) || m->dead;
     f << "reproducible: " << (timing ? "false" : "true") << "\n";
+    // Control messages of other runs on the domain (another run token): ignored, so they change nothing.
+    f << "foreign_control_messages: " << foreign.count() << "\n";
 }
 
 int Clock::Impl::finish(int code, double now) {
@@ -55,6 +57,7 @@ int Clock::Impl::finish(int code, double now) {
         send_control(msg::RUN_ABORT, abort_reason);
         spdlog::error("run aborted: {}", abort_reason);
     }
+    foreign.report();
     write_summary(code == kExitOk, now);
     control_writer->wait_for_acknowledgments(Duration_t(2, 0));
     return code;
