@@ -100,7 +100,8 @@ bool Clock::Impl::ours(const msg::ComponentStatus& s) {
         foreign.count_quietly();
         return false;
     }
-    foreign.note(s.run_token(), "'" + s.member().to_string() + "' on " + s.host().to_string(), "ComponentStatus");
+    foreign.note(s.run_token(), fmt::format("'{}' on {}", s.member().to_string(), s.host().to_string()),
+                 "ComponentStatus");
     return false;
 }
 
