@@ -352,10 +352,10 @@ int exit_code(const Outcome& out, const RunConfig& rc, const LaunchOptions& opt)
 
 int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& opt) {
     check_layout(rc, opt);
-    DomainLock domain_lock;  // held until the run's end
-    if (opt.layout != "direct") choose_domain(rc, domain_lock);
     // Validate everything before anything starts: build (construct + configure) every component.
     (void)rc.build(reg);
+    DomainLock domain_lock;  // held until the run's end
+    if (opt.layout != "direct") choose_domain(rc, domain_lock);
     const fs::path run_yaml = write_run_yaml(rc, opt);
     spdlog::info("run {} seed {} layout {}: {} steps of {} s -> {}", rc.info.run_index, rc.info.seed, opt.layout,
                  rc.info.steps, rc.info.dt_s, rc.out_dir);
