@@ -219,6 +219,7 @@ int main(int argc, char** argv) {
                                     ", this member speaks " + std::to_string(V));
             cfg = rc;
             token = rc.run_token();
+            last_clock = now;  // §5: the lost-clock timer runs from CONFIGURE (heartbeats count once it has the token)
             bool found = false;
             for (std::uint32_t i = 0; i < cfg.members().size(); ++i) {
                 const msg::MemberInfo& m = cfg.members()[i];
