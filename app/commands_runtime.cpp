@@ -52,7 +52,7 @@ void add_run_options(CLI::App* sub, RunArgs* a) {
     sub->add_option("--realtime", a->realtime, "pace to wall time x FACTOR (0 = as fast as possible)")
         ->check(CLI::Range(0.0, 1e6));
     sub->add_option("--steps", a->steps, "override the number of steps");
-    sub->add_option("--domain", a->domain, "DDS domain id (default: derived from the process id)")
+    sub->add_option("--domain", a->domain, "DDS domain id (default: the lowest one no other run of this host uses, docs/runtime.md)")
         ->check(CLI::Range(0, 232));
     sub->add_option("--set", a->o.sets, "override a key: path.to.key=value (YAML value; ~ removes)");
     sub->add_option("--grade", a->o.grades, "sensor grade for every group (NAME) or one group (GROUP=NAME)");
@@ -185,16 +185,22 @@ CLI::App* add_component_command(CLI::App& app, CliContext& ctx, CommandRunner& r
 
 CLI::App* add_clock_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
     auto config = std::make_shared<std::string>();
+    auto ready_fd = std::make_shared<int>(-1);
     auto* sub = app.add_subcommand("clock", "run the lockstep clock of a run");
     sub->add_option("--config", *config, "run config (YAML)")->required();
-    run = [config, &ctx]() -> int {
+    sub->add_option("--ready-fd", *ready_fd, "write \"1\" to this file descriptor once the domain is the run's "
+                                             "(the launcher starts the members then)")
+        ->check(CLI::Range(3, 1023));
+    run = [config, ready_fd, &ctx]() -> int {
         setup_logging(kClockName, ctx.log_level);
         install_stop_signal_handlers();
         const RunConfig rc = RunConfig::load(*config);
         keep_participants_until_exit();  // leave without a DISPOSE (dds/process/process_exit.hpp)
         int code = kExitOk;
         {
-            Clock clock(rc, ClockOptions{});
+            ClockOptions co;
+            co.ready_fd = *ready_fd;
+            Clock clock(rc, co);
             code = clock.run();
         }  // clock_summary.yaml and faults.yaml are written
         exit_keeping_participants(code);

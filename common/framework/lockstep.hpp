@@ -21,6 +21,9 @@ inline constexpr double kHeartbeatPeriodS = 0.1;
 inline constexpr double kWaitSliceS = 0.02;  // longest blocking wait in a loop (signals, heartbeats, timeouts)
 inline constexpr std::size_t kInboxRing = 128;  // > window_steps + 2 (a producer can be that far ahead)
 inline constexpr const char* kClockName = "clock";
+// How long a starting clock listens for another clock on its domain before it takes the domain (several periods
+// of the clocks' heartbeats after DDS discovery between two participants of one host; docs/runtime.md).
+inline constexpr double kClaimListenS = 1.0;
 
 // Exit codes of runtime processes.
 inline constexpr int kExitOk = 0;

@@ -1,5 +1,7 @@
 #include "launch/launcher.hpp"
 
+#include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
@@ -18,6 +20,7 @@
 #include "framework/lockstep.hpp"
 #include "dds/process/process_signals.hpp"
 #include "dds/security/security.hpp"
+#include "launch/domain_lock.hpp"
 #include "launch/run_outcome.hpp"
 #include "launch/shm_cleanup.hpp"
 
@@ -34,7 +37,8 @@ struct Child {
     int status{0};
 };
 
-pid_t spawn(const fs::path& exe, const std::vector<std::string>& args) {
+// keep_fd: a descriptor the program inherits (others are close-on-exec).
+pid_t spawn(const fs::path& exe, const std::vector<std::string>& args, int keep_fd = -1) {
     std::vector<char*> argv;
     argv.push_back(const_cast<char*>(exe.c_str()));
     for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
@@ -45,6 +49,7 @@ pid_t spawn(const fs::path& exe, const std::vector<std::string>& args) {
     if (pid == 0) {
         prctl(PR_SET_PDEATHSIG, SIGTERM);  // never outlive the launcher
         if (getppid() != parent) _exit(1);
+        if (keep_fd >= 0) fcntl(keep_fd, F_SETFD, 0);
         execv(exe.c_str(), argv.data());
         _exit(127);
     }
@@ -166,17 +171,6 @@ void check_layout(const RunConfig& rc, const LaunchOptions& opt) {
                                   "composed or distributed (the direct layout has no transport)");
 }
 
-// A run without a given domain gets one derived from this process's id.
-void choose_domain(RunConfig& rc) {
-    if (rc.domain_given) return;
-    rc.domain_id = static_cast<int>(getpid() % 200) + 20;
-    RunOverrides o;
-    o.domain_id = rc.domain_id;
-    const std::string faults_origin = rc.faults_origin;  // errors keep naming the file the faults came from
-    rc = RunConfig::parse(rc.to_yaml(), rc.origin, o);
-    rc.faults_origin = faults_origin;
-}
-
 fs::path write_run_yaml(const RunConfig& rc, const LaunchOptions& opt) {
     fs::create_directories(rc.out_dir);
     // The closing line reads the clock's summary of this run: none of an earlier run in this folder may stand in.
@@ -224,9 +218,47 @@ std::vector<Child> start_services(const LaunchOptions& opt) {
     return services;
 }
 
-// The clock (when this process starts it) and the members: all (not external), or this host's slice of a plan.
+fs::path member_exe(const LaunchOptions& opt) {
+    return opt.exe.empty() ? fs::read_symlink("/proc/self/exe") : opt.exe;
+}
+
+// Starts the clock and waits until it owns the domain: it heard no other clock (docs/runtime.md, "DDS domains").
+// False when it refused (its one line says why), ended, or the wait was interrupted: no member may start then.
+bool start_clock(std::vector<Child>& children, const RunConfig& rc, const LaunchOptions& opt,
+                 const fs::path& run_yaml) {
+    int fds[2];
+    if (pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error("pipe failed");
+    children.push_back({kClockName, spawn(member_exe(opt), {"clock", "--ready-fd", std::to_string(fds[1]), "--config",
+                                                            run_yaml.string(), "--log-level", opt.log_level},
+                                          fds[1])});
+    close(fds[1]);
+    const double end = steady_now_s() + kClaimListenS + rc.startup_timeout_s;
+    char c = 0;
+    ssize_t n = -1;
+    pollfd p{fds[0], POLLIN, 0};
+    while (n < 0 && !stop_requested() && steady_now_s() < end)
+        if (poll(&p, 1, 50) > 0) n = read(fds[0], &c, 1);
+    close(fds[0]);
+    if (n == 1) return true;
+    if (n != 0) kill(children.front().pid, SIGTERM);  // interrupted, or no answer: the clock ends too
+    return false;
+}
+
+// The clock ended before it owned the domain: its exit code, once it is gone.
+int clock_refused(std::vector<Child>& children) {
+    int code = 1;
+    if (!wait_all(children, 5.0, [&code](Child& c) {
+            code = WIFEXITED(c.status) ? WEXITSTATUS(c.status) : 128 + WTERMSIG(c.status);
+        })) {
+        signal_all(children, SIGKILL);
+        reap(children, [](Child&) {});
+    }
+    return stop_requested() ? kExitInterrupted : code == 0 ? 1 : code;
+}
+
+// The members: all (not external), or this host's slice of a plan.
 std::vector<Child> start_members(const RunConfig& rc, const LaunchOptions& opt, const fs::path& run_yaml) {
-    const fs::path exe = opt.exe.empty() ? fs::read_symlink("/proc/self/exe") : opt.exe;
+    const fs::path exe = member_exe(opt);
     const std::vector<std::string> common{"--config", run_yaml.string(), "--log-level", opt.log_level};
     auto args = [&](std::vector<std::string> a) {
         a.insert(a.end(), common.begin(), common.end());
@@ -237,7 +269,6 @@ std::vector<Child> start_members(const RunConfig& rc, const LaunchOptions& opt, 
         return !opt.slice || std::find(opt.only.begin(), opt.only.end(), name) != opt.only.end();
     };
     std::vector<Child> children;
-    if (opt.start_clock) children.push_back({kClockName, spawn(exe, args({"clock"}))});
     if (opt.layout == "distributed") {
         for (const auto& m : rc.members)
             if (here(m.name)) children.push_back({m.name, spawn(exe, args({"component", m.name}))});
@@ -334,9 +365,10 @@ int exit_code(const Outcome& out, const RunConfig& rc, const LaunchOptions& opt)
 
 int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& opt) {
     check_layout(rc, opt);
-    choose_domain(rc);
     // Validate everything before anything starts: build (construct + configure) every component.
     (void)rc.build(reg);
+    DomainLock domain_lock;  // held until the run's end
+    if (opt.layout != "direct") choose_domain(rc, domain_lock);
     const fs::path run_yaml = write_run_yaml(rc, opt);
     spdlog::info("run {} seed {} layout {}: {} steps of {} s -> {}", rc.info.run_index, rc.info.seed, opt.layout,
                  rc.info.steps, rc.info.dt_s, rc.out_dir);
@@ -350,7 +382,13 @@ int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& 
     const std::time_t started = std::time(nullptr) - 1;
     install_stop_signal_handlers();
     std::vector<Child> services = start_services(opt);
-    std::vector<Child> children = start_members(rc, opt, run_yaml);
+    std::vector<Child> children;
+    if (opt.start_clock && !start_clock(children, rc, opt, run_yaml)) {
+        const int code = clock_refused(children);
+        stop_services(services);
+        return code;
+    }
+    for (Child& c : start_members(rc, opt, run_yaml)) children.push_back(c);
     if (!rc.external.empty())
         spdlog::info("external member(s) {} are not started by gdnav: start them on DDS domain {} with run id {} "
                      "(e.g. `--domain {} --run {}`); waiting up to {:.0f} s",

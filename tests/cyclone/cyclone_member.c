@@ -199,6 +199,7 @@ struct member {
     uint64_t steps, window_steps, done_every;
     double dt_s, t0_s, member_timeout_s;
     uint32_t index;
+    uint64_t token; /* the run token of the CONFIGURE joined (docs/protocol.md §1); 0 before */
     uint32_t producers[64];
     uint32_t n_producers;
     uint32_t consumers;
@@ -228,6 +229,7 @@ static void send_status(struct member *m, gdnav_msg_StatusKind kind, const char 
     s.free_running = false;
     copy_str(s.message, sizeof s.message, message);
     s.protocol_version = PROTOCOL_VERSION;
+    s.run_token = m->token;
     const dds_return_t rc = dds_write(m->status_w, &s);
     if (rc != DDS_RETCODE_OK) LOG_WARN("ComponentStatus not written: %s", dds_strretcode(rc));
 }
@@ -239,6 +241,7 @@ static void configure(struct member *m, const gdnav_msg_RunControl *c, double no
     m->window_steps = c->window_steps;
     m->done_every = c->done_every > 0 ? c->done_every : 1;
     m->member_timeout_s = c->member_timeout_s;
+    m->token = c->run_token;
     m->index = UINT32_MAX;
     m->n_producers = 0;
     m->consumers = 0;
@@ -271,6 +274,7 @@ static int read_control(struct member *m, double now) {
     for (int i = 0; i < n && code < 0; i++) {
         const gdnav_msg_RunControl *c = buf[i];
         if (!si[i].valid_data || c->run_id != m->opt.run_id) continue;
+        if (m->token != 0 && c->run_token != m->token) continue; /* another run's (§1) */
         switch (c->command) {
             case gdnav_msg_RUN_CONFIGURE:
                 if (m->state != ANNOUNCE) break;
@@ -311,6 +315,7 @@ static void read_status(struct member *m, double now) {
         for (int i = 0; i < n; i++) {
             const gdnav_msg_ComponentStatus *s = buf[i];
             if (!si[i].valid_data || s->run_id != m->opt.run_id || strcmp(s->member, CLOCK_NAME) != 0) continue;
+            if (m->token == 0 || s->run_token != m->token) continue; /* before CONFIGURE, or another run's */
             m->last_clock_s = now;
             if (!m->heard_clock) LOG_INFO("first heartbeat of the clock (from %s)", s->host);
             m->heard_clock = true;
@@ -327,6 +332,7 @@ static void read_ticks(struct member *m, double now) {
         for (int i = 0; i < n; i++) {
             const gdnav_msg_Tick *t = buf[i];
             if (!si[i].valid_data || t->stamp.run_id != m->opt.run_id || m->state == ANNOUNCE) continue;
+            if (t->run_token != m->token) continue; /* another run's (§1) */
             m->last_clock_s = now;
             if (!m->have_tick || t->stamp.step > m->tick_step) m->tick_step = t->stamp.step;
             if (!m->have_tick) LOG_INFO("first Tick (step %llu): running", (unsigned long long)t->stamp.step);
@@ -407,7 +413,7 @@ static void advance(struct member *m) {
         if (rc != DDS_RETCODE_OK) LOG_WARN("%s of step %llu not written: %s", OUTPUT_TOPIC, (unsigned long long)k, dds_strretcode(rc));
         m->k = k + 1;
         if ((k + 1) % m->done_every == 0 || k + 1 == m->steps) {
-            const gdnav_msg_StepDone d = {m->opt.run_id, k, m->index};
+            const gdnav_msg_StepDone d = {m->opt.run_id, k, m->index, m->token};
             rc = dds_write(m->done_w, &d);
             if (rc != DDS_RETCODE_OK) LOG_WARN("StepDone(%llu) not written: %s", (unsigned long long)k, dds_strretcode(rc));
         }

@@ -163,6 +163,7 @@ int main(int argc, char** argv) {
 
     enum class State { Announce, Matching, Ready, Running } state = State::Announce;  // §3
     msg::RunControl cfg;                 // the CONFIGURE adopted (§3.2)
+    std::uint64_t token = 0;             // its run token (§1): 0 until then
     std::uint32_t me = 0;                // my index in the member table
     std::vector<std::uint32_t> producers;  // table indices producing kIn
     int consumers = 0;                   // table entries reading kOut
@@ -186,6 +187,7 @@ int main(int argc, char** argv) {
         s.free_running(false);
         s.message(message);
         s.protocol_version(V);
+        s.run_token(token);
         st_w->write(&s);
     };
     auto leave = [&](int code, const std::string& why) {  // §3.7, §5: exit codes; STATUS_EXIT before a non-zero exit
@@ -208,9 +210,10 @@ int main(int argc, char** argv) {
         ws.wait(active, Duration_t(0, 20'000'000));  // at most 20 ms: heartbeats and timeouts between samples
         const double now = now_s();
         if (g_signal) return leave(130, "stopped by signal " + std::to_string(g_signal));
-        // §3.2, §3.7: RunControl of my run_id; STOP/ABORT in any state; the first CONFIGURE only.
+        // §3.2, §3.7: RunControl of my run_id (and, once joined, of my token); STOP/ABORT in any state; the first
+        // CONFIGURE only.
         while (take(rc_r, rc)) {
-            if (rc.run_id() != run) continue;
+            if (rc.run_id() != run || (token != 0 && rc.run_token() != token)) continue;
             if (rc.command() == msg::RUN_STOP) return leave(0, "");
             if (rc.command() == msg::RUN_ABORT) return leave(3, "run aborted by the clock: " + rc.reason().to_string());
             if (rc.command() != msg::RUN_CONFIGURE || state != State::Announce) continue;
@@ -218,6 +221,8 @@ int main(int argc, char** argv) {
                 return leave(5, "the clock speaks lockstep protocol version " + std::to_string(rc.protocol_version()) +
                                     ", this member speaks " + std::to_string(V));
             cfg = rc;
+            token = rc.run_token();
+            last_clock = now;  // §5: the lost-clock timer runs from CONFIGURE (heartbeats count once it has the token)
             bool found = false;
             for (std::uint32_t i = 0; i < cfg.members().size(); ++i) {
                 const msg::MemberInfo& m = cfg.members()[i];
@@ -229,12 +234,13 @@ int main(int argc, char** argv) {
             lost = producers.empty();  // an input without producer is lost from step 0
             state = State::Matching;
         }
-        // §5 lost clock: a heartbeat of member `clock` of my run counts as a sign of life.
+        // §5 lost clock: a heartbeat of member `clock` of my run (and token) counts as a sign of life.
         while (take(st_r, st))
-            if (st.run_id() == run && st.member().to_string() == "clock") last_clock = now;
+            if (st.run_id() == run && st.member().to_string() == "clock" && token != 0 && st.run_token() == token)
+                last_clock = now;
         // §3.4: Ticks of my run (after CONFIGURE); tick_step = largest n; OR the dead_mask in.
         while (take(tk_r, tk)) {
-            if (tk.stamp().run_id() != run || state == State::Announce) continue;
+            if (tk.stamp().run_id() != run || state == State::Announce || tk.run_token() != token) continue;
             last_clock = now;
             state = State::Running;
             tick = std::max(tick, tk.stamp().step());
@@ -285,6 +291,7 @@ int main(int argc, char** argv) {
                 d.run_id(run);
                 d.step(k);
                 d.member_index(me);
+                d.run_token(token);
                 dn_w->write(&d);
             }
             ++k;

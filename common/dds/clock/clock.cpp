@@ -1,6 +1,8 @@
 // The lockstep clock's main loop: gathering the members, the start, Ticks, the end of the run (state: clock/clock_impl.hpp).
 #include "dds/clock/clock_impl.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
@@ -23,9 +25,10 @@ void Clock::Impl::heartbeat(double now) {
     status_out.member(kClockName);
     status_out.host(host_id);
     status_out.kind(msg::STATUS_HEARTBEAT);
-    status_out.message("");
+    status_out.message(rc.out_dir.substr(0, 1024));  // names the run to a clock that meets it (docs/protocol.md)
     status_out.protocol_version(msg::LOCKSTEP_PROTOCOL_VERSION);
     status_out.faults_version(faults_version);
+    status_out.run_token(token);
     status_writer->write(&status_out);
     // While waiting inside a step, re-send the current Tick: members see the clock alive and the dead set.
     if (phase == Phase::Running && now - last_tick_sent_s > kHeartbeatPeriodS && !tick_pending) send_tick(now);
@@ -37,6 +40,7 @@ void Clock::Impl::send_tick(double now) {
     tick.stamp().t_s(rc.info.time_of(current));
     tick.dead_mask(dead_mask);
     tick.last(current + 1 == rc.info.steps);
+    tick.run_token(token);
     tick_writer->write(&tick);
     last_tick_sent_s = now;
 }
@@ -55,6 +59,7 @@ void Clock::Impl::send_control(msg::RunCommand cmd, const std::string& reason) {
     control.seed(rc.info.seed);
     control.faults(schedule.to_yaml());
     control.faults_version(faults_version);
+    control.run_token(token);
     control.members().clear();
     for (Member* m : table) {
         msg::MemberInfo mi;
@@ -145,12 +150,33 @@ int Clock::Impl::loop() {
             return finish(kExitInterrupted, now);
         }
         read_status(now);
-        const int code = phase == Phase::Gather       ? gather_phase(now)
+        const int code = phase == Phase::Claim        ? claim_phase(now)
+                         : phase == Phase::Gather     ? gather_phase(now)
                          : phase == Phase::Configured ? configured_phase(now)
                                                       : running_phase(now);
         if (code != kGoOn) return code;
         heartbeat(now);
     }
+}
+
+// The domain is this run's when no other clock was heard for kClaimListenS (the clock's own heartbeats go out
+// meanwhile, so two clocks started together both refuse rather than share the domain).
+int Clock::Impl::claim_phase(double now) {
+    if (!rival.empty()) {
+        spdlog::error("DDS domain {} is in use by another run ({}); this run (token {}) does not start: choose "
+                      "another --domain, or give none to get a free one",
+                      rc.domain_id, rival, token_text(token));
+        if (opt.ready_fd >= 0) close(opt.ready_fd);
+        return kExitStartup;
+    }
+    if (now - start_s < kClaimListenS) return kGoOn;
+    phase = Phase::Gather;
+    spdlog::debug("DDS domain {} is free: run token {}", rc.domain_id, token_text(token));
+    if (opt.ready_fd >= 0) {
+        if (write(opt.ready_fd, "1", 1) != 1) spdlog::warn("cannot tell the launcher that the domain is claimed");
+        close(opt.ready_fd);
+    }
+    return gather_phase(now);
 }
 
 int Clock::Impl::gather_phase(double now) {

@@ -13,6 +13,9 @@ namespace gdnav::runtime {
 struct ClockOptions {
     std::vector<std::string> members;  // barrier members expected before step 0 (default: all components)
     bool progress{true};               // log progress lines every ~2 s
+    // Written to ("1") and closed once the clock owns its domain (no other clock heard while claiming it), so the
+    // launcher starts the members only then; -1: none. A clock that refuses closes it unwritten (it exits).
+    int ready_fd{-1};
 };
 
 class Clock {

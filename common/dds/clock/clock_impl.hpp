@@ -16,6 +16,7 @@
 #include <fastdds/dds/core/condition/WaitSet.hpp>
 
 #include "dds/dds_context.hpp"
+#include "dds/foreign_runs.hpp"
 #include "framework/lockstep.hpp"
 #include "msgs/messages.hpp"
 #include "dds/security/security.hpp"
@@ -59,7 +60,8 @@ struct Clock::Impl {
 
     std::map<std::string, Member> members;
     std::vector<Member*> table;  // index = member index
-    enum class Phase { Gather, Configured, Running } phase{Phase::Gather};
+    // Claim: the clock listens for another clock on its domain (docs/protocol.md, "Run token") before anything else.
+    enum class Phase { Claim, Gather, Configured, Running } phase{Phase::Claim};
     std::uint64_t current{0};
     std::uint64_t dead_mask{0};
     double start_s{0.0}, run_start_s{0.0}, last_progress_s{0.0}, next_log_s{0.0}, next_hb_s{0.0};
@@ -69,6 +71,9 @@ struct Clock::Impl {
     std::set<std::string> refused;  // members refused for a protocol version mismatch (logged once)
     bool tick_pending{false};
     std::string host_id{host_identity()};
+    const std::uint64_t token{draw_run_token()};  // the run's token (on the wire only)
+    ForeignRuns foreign;                          // control messages of other runs (other tokens), ignored
+    std::string rival;                            // another clock heard while claiming the domain
     // The fault schedule: the run config's, grown by faults injected live (gdnav fault). Members acknowledge each
     // version (ComponentStatus.faults_version) before the clock lets the run reach the step a new fault acts at.
     faults::FaultSchedule schedule{rc.faults};
@@ -114,6 +119,10 @@ struct Clock::Impl {
     void send_control(msg::RunCommand cmd, const std::string& reason);
 
     void read_status(double now);
+    // A status of member `clock`: ours, a rival while claiming, else a foreign run's (ignored).
+    void clock_status(const msg::ComponentStatus& s);
+    // Whether a member's status belongs to this run (token 0: a member that has not joined yet).
+    bool ours(const msg::ComponentStatus& s);
 
     void read_done(double now);
 
@@ -172,6 +181,7 @@ struct Clock::Impl {
     int loop();
     // One pass of the loop in each phase: an exit code when the run ends, else kGoOn.
     static constexpr int kGoOn = -1;
+    int claim_phase(double now);
     int gather_phase(double now);
     int configured_phase(double now);
     int running_phase(double now);

@@ -15,12 +15,13 @@ using namespace eprosima::fastdds::dds;
 void Clock::Impl::read_status(double now) {
     SampleInfo info;
     while (status_reader->take_next_sample(&status_in, &info) == ReturnCode_t::RETCODE_OK) {
-        if (!info.valid_data || status_in.run_id() != rc.info.run_index) continue;
+        if (!info.valid_data) continue;
         const std::string name = status_in.member().to_string();
         if (name == kClockName) {
-            if (status_in.host().to_string() != host_id) spdlog::warn("another clock ({}) on this domain and run", status_in.host());
+            clock_status(status_in);
             continue;
         }
+        if (status_in.run_id() != rc.info.run_index || !ours(status_in)) continue;
         if (status_in.protocol_version() != msg::LOCKSTEP_PROTOCOL_VERSION) {
             if (refused.insert(name).second)
                 spdlog::error("member '{}' ({}) speaks lockstep protocol version {}, this clock speaks {}: refused "
@@ -31,7 +32,7 @@ void Clock::Impl::read_status(double now) {
         }
         auto it = members.find(name);
         if (it == members.end()) {
-            if (!status_in.free_running() || phase != Phase::Gather) continue;  // not part of this run
+            if (!status_in.free_running() || phase > Phase::Gather) continue;  // not part of this run
             if (members.size() >= 63) {  // Tick.dead_mask has 64 bits; RunControl.members holds 64
                 if (refused.insert(name).second)
                     spdlog::error("free-running member '{}' refused: a run has at most 63 members", name);
@@ -66,7 +67,7 @@ void Clock::Impl::read_status(double now) {
             else if (m.free && m.expected)
                 spdlog::info("member '{}' is free-running (not in the barrier; run not reproducible)", name);
         }
-        if (status_in.kind() == msg::STATUS_READY) m.ready = true;
+        if (status_in.kind() == msg::STATUS_READY && status_in.run_token() == token) m.ready = true;
         if (const std::string text = status_in.message().to_string();
             (status_in.kind() == msg::STATUS_HEARTBEAT || status_in.kind() == msg::STATUS_READY) &&
             text.rfind("rejected ", 0) == 0)
@@ -78,10 +79,44 @@ void Clock::Impl::read_status(double now) {
     }
 }
 
+// Any clock but this one is another run: while claiming the domain a reason to refuse, afterwards ignored.
+void Clock::Impl::clock_status(const msg::ComponentStatus& s) {
+    if (s.run_token() == token) return;  // our own heartbeat
+    const std::string host = s.host().to_string();
+    if (phase != Phase::Claim) {
+        foreign.note(s.run_token(), "clock " + host, "its heartbeat");
+        return;
+    }
+    if (!rival.empty()) return;
+    const std::string out = s.message().to_string();
+    rival = "its clock on " + host + ", run id " + std::to_string(s.run_id()) + ", token " +
+            token_text(s.run_token()) + (out.empty() ? "" : ", output " + out) + ", at step " +
+            std::to_string(s.step());
+}
+
+// Statuses carry the token of the CONFIGURE their member joined with, or 0 before it has one (it announces itself).
+// Announcements count until the run starts (a member gets the table a moment after the clock sent it); a status
+// of another token is another run's.
+bool Clock::Impl::ours(const msg::ComponentStatus& s) {
+    if (s.run_token() == token) return true;
+    if (s.run_token() == 0) return phase != Phase::Running;
+    if (phase == Phase::Claim) {  // another run's member: its clock is about to be heard (claim_phase says it)
+        foreign.count_quietly();
+        return false;
+    }
+    foreign.note(s.run_token(), fmt::format("'{}' on {}", s.member().to_string(), s.host().to_string()),
+                 "ComponentStatus");
+    return false;
+}
+
 void Clock::Impl::read_done(double now) {
     SampleInfo info;
     while (done_reader->take_next_sample(&done_in, &info) == ReturnCode_t::RETCODE_OK) {
         if (!info.valid_data || done_in.run_id() != rc.info.run_index) continue;
+        if (done_in.run_token() != token) {
+            foreign.note(done_in.run_token(), "a StepDone writer", "StepDone");
+            continue;
+        }
         if (done_in.member_index() >= table.size()) continue;
         Member& m = *table[done_in.member_index()];
         m.last_seen_s = now;
@@ -184,6 +219,7 @@ void Clock::Impl::send_clock_status(msg::StatusKind kind, const std::string& mes
     status_out.message(message.substr(0, 1024));
     status_out.protocol_version(msg::LOCKSTEP_PROTOCOL_VERSION);
     status_out.faults_version(faults_version);
+    status_out.run_token(token);
     status_writer->write(&status_out);
 }
 

@@ -60,6 +60,8 @@ void Clock::Impl::write_summary(bool completed, double now) {
         f << "reproducible_claim: \"as a run without the " << rejected
           << " rejected samples (rejected_samples): samples not written by a topic's producer were never used, and a "
              "sample with a bad stamp counted as not available at its step\"\n";
+    // Control messages of other runs on the domain (another run token): ignored, so they change nothing.
+    f << "foreign_control_messages: " << foreign.count() << "\n";
 }
 
 std::uint64_t Clock::Impl::write_rejected(std::ostream& f) const {
@@ -98,6 +100,7 @@ int Clock::Impl::finish(int code, double now) {
         send_control(msg::RUN_ABORT, abort_reason);
         spdlog::error("run aborted: {}", abort_reason);
     }
+    foreign.report();
     write_summary(code == kExitOk, now);
     control_writer->wait_for_acknowledgments(Duration_t(2, 0));
     return code;

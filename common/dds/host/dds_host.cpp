@@ -162,6 +162,7 @@ void DdsHost::Impl::finish(int code) {
             control.send_status(l, msg::STATUS_EXIT, "exit code " + std::to_string(code));
         if (!l.killed) l.comp->finish(code == kExitOk);
     }
+    control.report_foreign();
     inputs.report_lateness(locals, rc.out_dir);
     host::Inputs::report_rejected(locals);
     host::Observers::report(locals, control.timing().ri.steps);

@@ -50,6 +50,7 @@ void ControlPlane::send_status(const Local& l, msg::StatusKind kind, const std::
     status_out_.message(message);
     status_out_.protocol_version(msg::LOCKSTEP_PROTOCOL_VERSION);
     status_out_.faults_version(faults_version_);
+    status_out_.run_token(token_);
     status_writer_->write(&status_out_);
 }
 
@@ -57,6 +58,7 @@ void ControlPlane::send_done(const Local& l, std::uint64_t k) {
     done_.run_id(timing_.ri.run_index);
     done_.step(k);
     done_.member_index(l.index);
+    done_.run_token(token_);
     done_writer_->write(&done_);
 }
 
@@ -72,7 +74,7 @@ void ControlPlane::heartbeat(double now, const std::vector<Local>& locals) {
 bool ControlPlane::read_control(int& code, ControlHandler& handler) {
     SampleInfo info;
     while (control_reader_->take_next_sample(&control_, &info) == ReturnCode_t::RETCODE_OK) {
-        if (!info.valid_data || control_.run_id() != timing_.ri.run_index) continue;
+        if (!info.valid_data || control_.run_id() != timing_.ri.run_index || !ours(control_)) continue;
         switch (control_.command()) {
             case msg::RUN_CONFIGURE:
             case msg::RUN_FAULTS:
@@ -108,6 +110,14 @@ bool ControlPlane::read_control(int& code, ControlHandler& handler) {
     return true;
 }
 
+bool ControlPlane::ours(const msg::RunControl& c) {
+    if (token_ != 0 && c.run_token() != token_) {
+        foreign_.note(c.run_token(), "a RunControl writer", "RunControl");
+        return false;
+    }
+    return true;
+}
+
 bool ControlPlane::configure(int& code, ControlHandler& handler) {
     if (control_.protocol_version() != msg::LOCKSTEP_PROTOCOL_VERSION) {
         spdlog::error("the clock speaks lockstep protocol version {}, this member speaks {}; "
@@ -117,6 +127,7 @@ bool ControlPlane::configure(int& code, ControlHandler& handler) {
         return false;
     }
     adopt_timing();
+    token_ = control_.run_token();
     table_.assign(control_.members().begin(), control_.members().end());
     if (!handler.configure(control_)) {
         code = kExitStartup;
@@ -148,6 +159,10 @@ bool ControlPlane::read_ticks(double now) {
     SampleInfo info;
     while (tick_reader_->take_next_sample(&tick_, &info) == ReturnCode_t::RETCODE_OK) {
         if (!info.valid_data || tick_.stamp().run_id() != timing_.ri.run_index) continue;
+        if (tick_.run_token() != token_) {  // another run's, or (token 0) before this host has joined
+            if (token_ != 0) foreign_.note(tick_.run_token(), "a Tick writer", "Tick");
+            continue;
+        }
         last_clock_s_ = now;
         if (!have_tick_ || tick_.stamp().step() > tick_step_) tick_step_ = tick_.stamp().step();
         have_tick_ = true;
@@ -164,9 +179,13 @@ bool ControlPlane::read_ticks(double now) {
 void ControlPlane::read_status(double now) {
     SampleInfo info;
     while (status_reader_->take_next_sample(&status_in_, &info) == ReturnCode_t::RETCODE_OK) {
-        if (info.valid_data && status_in_.member().to_string() == kClockName &&
-            status_in_.run_id() == timing_.ri.run_index)
+        if (!info.valid_data || status_in_.member().to_string() != kClockName ||
+            status_in_.run_id() != timing_.ri.run_index || token_ == 0)
+            continue;
+        if (status_in_.run_token() == token_)
             last_clock_s_ = now;
+        else
+            foreign_.note(status_in_.run_token(), "clock " + status_in_.host().to_string(), "its heartbeat");
     }
 }
 

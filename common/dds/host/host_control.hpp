@@ -8,6 +8,7 @@
 #include <fastdds/dds/core/condition/WaitSet.hpp>
 
 #include "dds/dds_context.hpp"
+#include "dds/foreign_runs.hpp"
 #include "dds/host/host_inbox.hpp"
 #include "framework/lockstep.hpp"
 #include "framework/run_config.hpp"
@@ -69,6 +70,10 @@ public:
     [[nodiscard]] Phase phase() const { return phase_; }
     [[nodiscard]] const RunTiming& timing() const { return timing_; }
     [[nodiscard]] const std::string& host_id() const { return host_id_; }
+    // The run token of the CONFIGURE the host joined with (0 before); control messages of another are ignored.
+    [[nodiscard]] std::uint64_t token() const { return token_; }
+    // Control messages of other runs ignored: one line at the end, when there were any.
+    void report_foreign() const { foreign_.report(); }
     // Whether step k may be computed now: Ticks have started, k is within the window and within the run.
     [[nodiscard]] bool may_step(std::uint64_t k) const {
         return have_tick_ && k <= tick_step_ + timing_.window_steps && k < timing_.ri.steps;
@@ -91,6 +96,9 @@ public:
 
 private:
     bool configure(int& code, ControlHandler& handler);
+    // Whether a RunControl sample is this run's: before joining, any CONFIGURE (the first one is joined), STOP or
+    // ABORT of the run id; afterwards only those of the run token.
+    bool ours(const msg::RunControl& c);
     void adopt_timing();
 
     const RunConfig& rc_;
@@ -118,6 +126,8 @@ private:
     double next_heartbeat_s_{0.0};
     std::string host_id_{host_identity()};
     std::string abort_reason_;
+    std::uint64_t token_{0};
+    ForeignRuns foreign_;
 
     msg::Tick tick_;
     msg::RunControl control_;

@@ -33,7 +33,6 @@ namespace {
 struct Worker {
     std::uint64_t run{0};
     pid_t pid{0};
-    int slot{0};
     double started_s{0.0};
     fs::path dir;
 };
@@ -206,13 +205,12 @@ std::vector<std::uint64_t> runs_to_do(const PreparedBatch& p, std::size_t& skipp
 class ShardRun {
 public:
     ShardRun(const BatchSpec& spec, const PreparedBatch& p, std::vector<std::uint64_t> todo, std::size_t skipped)
-        : spec_(spec), p_(p), todo_(std::move(todo)), skipped_(skipped), slot_busy_(spec.jobs, false) {}
+        : spec_(spec), p_(p), todo_(std::move(todo)), skipped_(skipped) {}
 
     void run() {
         install_stop_signal_handlers();
         exe_ = fs::read_symlink("/proc/self/exe");
         tty_ = isatty(STDERR_FILENO) != 0;
-        domain_base_ = static_cast<int>(getpid() % 200);
         t0_ = steady_now_s();
         while ((next_ < todo_.size() && !interrupted_) || !workers_.empty()) {
             if (stop_requested() && !interrupted_) interrupt();
@@ -257,19 +255,16 @@ private:
         while (!interrupted_ && next_ < todo_.size() && workers_.size() < spec_.jobs) {
             Worker w;
             w.run = todo_[next_++];
-            w.slot = static_cast<int>(std::find(slot_busy_.begin(), slot_busy_.end(), false) - slot_busy_.begin());
-            slot_busy_[static_cast<std::size_t>(w.slot)] = true;
             w.dir = p_.dir / "runs" / run_dir_name(w.run);
             std::error_code ec;
             fs::remove_all(w.dir, ec);  // stale files of an interrupted attempt
             fs::create_directories(w.dir);
-            const int domain = 20 + (domain_base_ + w.slot) % 200;
+            // No --domain: each run takes a DDS domain no other run of this host uses (launch/domain_lock.hpp).
             const std::vector<std::string> args{"run",         "--scenario", (p_.dir / "scenario.yaml").string(),
                                                 "--seed",      std::to_string(p_.seed),
                                                 "--run",       std::to_string(w.run),
                                                 "--layout",    spec_.layout,
                                                 "--out",       w.dir.string(),
-                                                "--domain",    std::to_string(domain),
                                                 "--log-level", spec_.log_level};
             w.pid = spawn_logged(exe_, args, w.dir / "log.txt");
             w.started_s = steady_now_s();
@@ -291,7 +286,6 @@ private:
             } else if (!interrupted_) {
                 failures_.push_back({it->run, code == 0 ? 1 : code, last_line(it->dir / "log.txt")});
             }
-            slot_busy_[static_cast<std::size_t>(it->slot)] = false;
             workers_.erase(it);
             print_progress(false);
         }
@@ -324,12 +318,10 @@ private:
     const PreparedBatch& p_;
     const std::vector<std::uint64_t> todo_;
     const std::size_t skipped_;
-    std::vector<bool> slot_busy_;
     std::vector<Worker> workers_;
     std::vector<Failure> failures_;
     fs::path exe_;
     bool tty_{false};
-    int domain_base_{0};
     std::size_t next_{0}, done_now_{0};
     double t0_{0.0}, last_print_{0.0}, kill_at_s_{0.0};
     bool interrupted_{false};

@@ -64,18 +64,33 @@ int send_fault_request(const FaultRequestSpec& a, const std::string& entry) {
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
+    // The request carries the run's token (the clock ignores another): learnt from the clock's heartbeat.
+    msg::ComponentStatus s;
+    SampleInfo info;
+    std::uint64_t token = 0;
+    while (token == 0) {
+        while (token == 0 && r->take_next_sample(&s, &info) == ReturnCode_t::RETCODE_OK)
+            if (info.valid_data && s.member().to_string() == runtime::kClockName && s.run_id() == a.run_index)
+                token = s.run_token();
+        if (token != 0) break;
+        if (std::chrono::steady_clock::now() > end) {
+            spdlog::error("no clock of run id {} on DDS domain {} within {:.0f} s (is a run going?)", a.run_index,
+                          a.domain, a.timeout_s);
+            return runtime::kExitStartup;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
     msg::FaultRequest req;
     req.run_id(a.run_index);
+    req.run_token(token);
     req.request_id((static_cast<std::uint64_t>(getpid()) << 20) ^
                    static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count() & 0xfffff));
     req.fault(entry);
     w->write(&req);
     const std::string prefix = "fault " + std::to_string(req.request_id()) + " ";
-    msg::ComponentStatus s;
-    SampleInfo info;
     while (std::chrono::steady_clock::now() < end) {
         while (r->take_next_sample(&s, &info) == ReturnCode_t::RETCODE_OK) {
-            if (!info.valid_data || s.member().to_string() != runtime::kClockName) continue;
+            if (!info.valid_data || s.member().to_string() != runtime::kClockName || s.run_token() != token) continue;
             const std::string m = s.message().to_string();
             if (m.rfind(prefix, 0) != 0) continue;
             if (s.kind() == msg::STATUS_ERROR) {

@@ -1,0 +1,197 @@
+// A run owns its DDS domain (docs/protocol.md §1, docs/runtime.md "DDS domains"):
+//  - a second run on the domain of a running one refuses with one line before any of its members starts, and the
+//    first completes with the outputs of the same run alone;
+//  - control messages of another run (another run token: a member's status and StepDone, a clock's heartbeat, Tick,
+//    RunControl ABORT) are ignored and counted;
+//  - runs without --domain started together get different domains.
+#include <gtest/gtest.h>
+#include <signal.h>
+
+#include <chrono>
+#include <regex>
+#include <thread>
+
+#include <yaml-cpp/yaml.h>
+
+#include "dds/dds_context.hpp"
+#include "framework/lockstep.hpp"
+#include "framework/run_config.hpp"
+#include "framework/topic_types.hpp"
+#include "msgs/messages.hpp"
+#include "process_util.hpp"
+
+using namespace gdnav::testing;
+namespace rt = gdnav::runtime;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Domains of these tests (below the other integration tests' 120-232, above the launcher's first free ones).
+constexpr int kSharedDomain = 111;
+constexpr int kForeignDomain = 112;
+
+// The test chain, distributed, paced to 10x real time: 3000 steps = 30 s simulated, about 3 s of wall time.
+std::vector<std::string> chain_run(const fs::path& out, const std::string& layout, int domain) {
+    std::vector<std::string> a{testchain_exe(), "run",      "--scenario", chain_scenario(), "--layout", layout,
+                               "--steps",       "3000",     "--realtime", "10",             "--out",    out.string()};
+    if (domain >= 0) a.insert(a.end(), {"--domain", std::to_string(domain)});
+    return a;
+}
+
+// Waits until the run logging to `log` has started step 0 (its clock took the domain and every member is ready).
+bool wait_started(const fs::path& log, pid_t pid) {
+    for (int i = 0; i < 600; ++i) {
+        if (read_file(log).find("starts (") != std::string::npos) return true;
+        if (wait_for(pid, 0.0) != -1) return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return false;
+}
+
+int finish(pid_t pid) {
+    const int code = wait_for(pid, 120.0);
+    if (code == -1) kill(pid, SIGINT);
+    return code;
+}
+
+std::size_t count_of(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
+    return n;
+}
+
+}  // namespace
+
+TEST(Domain, SecondRunOnADomainRefusesBeforeItsMembersStartFirstRunUnchanged) {
+    const fs::path dir = temp_dir("domain-shared");
+    const fs::path a_out = dir / "A", b_out = dir / "B", alone_out = dir / "alone";
+    const pid_t a = start(chain_run(a_out, "distributed", kSharedDomain), dir / "A.log");
+    ASSERT_TRUE(wait_started(dir / "A.log", a)) << read_file(dir / "A.log");
+    const Result b = run(chain_run(b_out, "composed", kSharedDomain), 60.0);
+    const int a_code = finish(a);
+    const std::string a_log = read_file(dir / "A.log");
+
+    EXPECT_EQ(b.exit_code, rt::kExitStartup) << b.output;
+    EXPECT_EQ(count_of(b.output, "is in use by another run"), 1u) << b.output;
+    EXPECT_EQ(count_of(b.output, "] error: "), 1u) << "one line, not more: " << b.output;
+    EXPECT_NE(b.output.find("output " + a_out.string()), std::string::npos) << "names the other run: " << b.output;
+    EXPECT_FALSE(fs::exists(b_out / "processes.yaml")) << "members were started: " << b.output;
+
+    ASSERT_EQ(a_code, 0) << a_log;
+    const Result alone = run(chain_run(alone_out, "distributed", -1), 120.0);
+    ASSERT_EQ(alone.exit_code, 0) << alone.output;
+    const auto digests = read_digests(a_out);
+    EXPECT_EQ(digests.size(), 4u) << a_log;
+    EXPECT_EQ(digests, read_digests(alone_out)) << "the run that kept its domain changed: " << a_log;
+}
+
+TEST(Domain, ControlMessagesOfAnotherRunAreIgnoredAndCounted) {
+    const fs::path dir = temp_dir("domain-foreign");
+    const fs::path out = dir / "run", direct_out = dir / "direct";
+    const pid_t launcher = start(chain_run(out, "distributed", kForeignDomain), dir / "run.log");
+    ASSERT_TRUE(wait_started(dir / "run.log", launcher)) << read_file(dir / "run.log");
+
+    // Another run's participant: the statuses of a member that gives up and of a clock, StepDone far ahead for
+    // every table index, a last Tick and an ABORT, all with its own token, every 20 ms for 1.5 s once its writers
+    // reach the run (a sample written before is lost).
+    rt::register_gdnav_topics();
+    std::uint64_t sent = 0, to_clock = 0;
+    {
+        rt::DdsContext dds(kForeignDomain, rt::config_dir() / "dds" / "gdnav_profiles.xml", "gdnav.test.foreign");
+        using gdnav::msg::ComponentStatus;
+        auto* status_w = dds.writer(gdnav::topics::kStatus, rt::message_ops<ComponentStatus>(),
+                                    rt::kControlWriterProfile);
+        auto* done_w = dds.writer(gdnav::topics::kStepDone, rt::message_ops<gdnav::msg::StepDone>(),
+                                  rt::kControlWriterProfile);
+        auto* tick_w =
+            dds.writer(gdnav::topics::kTick, rt::message_ops<gdnav::msg::Tick>(), rt::kControlWriterProfile);
+        auto* control_w = dds.writer(gdnav::topics::kRunControl, rt::message_ops<gdnav::msg::RunControl>(),
+                                     rt::kLatchedWriterProfile);
+        constexpr std::uint64_t kToken = 0x0bad0bad0bad0badULL;
+        const auto matched = [](eprosima::fastdds::dds::DataWriter* w) {
+            eprosima::fastdds::dds::PublicationMatchedStatus st;
+            w->get_publication_matched_status(st);
+            return st.current_count > 0;
+        };
+        for (int i = 0; i < 200 && !(matched(status_w) && matched(done_w) && matched(tick_w)); ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(1500);
+        while (std::chrono::steady_clock::now() < end && wait_for(launcher, 0.0) == -1) {
+            for (const char* name : {"chain_plant", rt::kClockName}) {
+                ComponentStatus s;
+                s.run_id(0);
+                s.member(name);
+                s.host("foreign:1");
+                s.kind(name == rt::kClockName ? gdnav::msg::STATUS_HEARTBEAT : gdnav::msg::STATUS_EXIT);
+                s.message("exit code 4");
+                s.protocol_version(gdnav::msg::LOCKSTEP_PROTOCOL_VERSION);
+                s.run_token(kToken);
+                status_w->write(&s);
+            }
+            for (std::uint32_t i = 0; i < 5; ++i) {
+                gdnav::msg::StepDone d;
+                d.step(1000000);
+                d.member_index(i);
+                d.run_token(kToken);
+                done_w->write(&d);
+            }
+            gdnav::msg::Tick t;
+            t.stamp().step(1000000);
+            t.dead_mask(~0ULL);
+            t.last(true);
+            t.run_token(kToken);
+            tick_w->write(&t);
+            gdnav::msg::RunControl c;
+            c.command(gdnav::msg::RUN_ABORT);
+            c.reason("foreign abort");
+            c.run_token(kToken);
+            control_w->write(&c);
+            sent += 9;
+            to_clock += 7;
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        }
+        for (auto* w : {status_w, done_w}) w->wait_for_acknowledgments(eprosima::fastrtps::Duration_t(2, 0));
+    }
+    const int code = finish(launcher);
+    const std::string log = read_file(dir / "run.log");
+    ASSERT_EQ(code, 0) << log;
+    ASSERT_GT(sent, 100u);
+    EXPECT_EQ(log.find("foreign abort"), std::string::npos) << log;
+
+    // Counted: the clock ignored the statuses and StepDones sent to it ...
+    const YAML::Node summary = YAML::LoadFile((out / "clock_summary.yaml").string());
+    const auto ignored = summary["foreign_control_messages"].as<std::uint64_t>();
+    std::printf("sent %llu foreign control messages (%llu to the clock); the clock ignored %llu\n",
+                static_cast<unsigned long long>(sent), static_cast<unsigned long long>(to_clock),
+                static_cast<unsigned long long>(ignored));
+    EXPECT_GE(ignored, to_clock / 2);
+    EXPECT_TRUE(summary["completed"].as<bool>());
+    EXPECT_TRUE(summary["reproducible"].as<bool>()) << "nobody was declared dead";
+    // ... logged once per source: the clock 3 sources, each of the 5 member processes 3 (RunControl, Tick, clock).
+    const std::size_t lines = count_of(log, "ignoring control messages of another run");
+    EXPECT_GE(lines, 3u) << log;
+    EXPECT_LE(lines, 18u) << log;
+    // Nothing changed: the same outputs as the run in one thread.
+    const Result direct = run(chain_run(direct_out, "direct", -1), 120.0);
+    ASSERT_EQ(direct.exit_code, 0) << direct.output;
+    EXPECT_EQ(read_digests(out).size(), 4u);
+    EXPECT_EQ(read_digests(out), read_digests(direct_out)) << log;
+}
+
+TEST(Domain, RunsWithoutADomainStartedTogetherGetDifferentOnes) {
+    const fs::path dir = temp_dir("domain-auto");
+    const pid_t one = start(chain_run(dir / "one", "composed", -1), dir / "one.log");
+    const pid_t two = start(chain_run(dir / "two", "composed", -1), dir / "two.log");
+    EXPECT_EQ(finish(one), 0) << read_file(dir / "one.log");
+    EXPECT_EQ(finish(two), 0) << read_file(dir / "two.log");
+    const std::regex printed(R"(DDS domain (\d+) \(no other run of this host uses it)");
+    std::smatch m1, m2;
+    const std::string log1 = read_file(dir / "one.log"), log2 = read_file(dir / "two.log");
+    ASSERT_TRUE(std::regex_search(log1, m1, printed)) << log1;
+    ASSERT_TRUE(std::regex_search(log2, m2, printed)) << log2;
+    EXPECT_NE(m1[1].str(), m2[1].str());
+    // Each run's members were given its domain.
+    for (const auto& [name, m] : {std::pair{"one", m1[1].str()}, std::pair{"two", m2[1].str()}})
+        EXPECT_EQ(YAML::LoadFile((dir / name / "run.yaml").string())["run"]["domain_id"].as<std::string>(), m)
+            << name;
+}
