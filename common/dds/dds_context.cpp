@@ -65,9 +65,11 @@ DdsContext::DdsContext(int domain_id, const std::filesystem::path& profile_file,
 
 DdsContext::~DdsContext() {
     if (!participant_) return;
-    // Readers and writers go in any case (no listener of ours can be called after this); the participant itself
-    // stays in a process that keeps it until it ends, which then leaves without a DISPOSE
-    // (dds/process/process_exit.hpp).
+    // The participant's listener (participants_) dies with this object, and a kept participant goes on discovering
+    // peers until the process ends: detached first, which waits for a discovery callback in progress. Readers and
+    // writers go in any case (no listener of ours can be called after this); the participant itself stays in a
+    // process that keeps it until it ends, which then leaves without a DISPOSE (dds/process/process_exit.hpp).
+    participant_->set_listener(nullptr);
     participant_->delete_contained_entities();
     if (!participants_kept()) DomainParticipantFactory::get_instance()->delete_participant(participant_);
 }

@@ -64,7 +64,7 @@ private:
     eprosima::fastdds::dds::DataReader* create_reader(eprosima::fastdds::dds::TopicDescription* description,
                                                       const std::string& what, const char* profile,
                                                       bool best_effort = false);
-    Participants participants_;  // the participant's listener: outlives it (the destructor deletes it first)
+    Participants participants_;  // the participant's listener (the destructor detaches it first)
     eprosima::fastdds::dds::DomainParticipant* participant_{nullptr};
     eprosima::fastdds::dds::Publisher* publisher_{nullptr};
     eprosima::fastdds::dds::Subscriber* subscriber_{nullptr};

@@ -3,7 +3,6 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
-#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -20,6 +19,7 @@
 #include "framework/lockstep.hpp"
 #include "dds/process/process_signals.hpp"
 #include "dds/security/security.hpp"
+#include "launch/children.hpp"
 #include "launch/domain_lock.hpp"
 #include "launch/run_outcome.hpp"
 #include "launch/shm_cleanup.hpp"
@@ -27,78 +27,6 @@
 namespace gdnav::runtime {
 
 namespace fs = std::filesystem;
-
-namespace {
-
-struct Child {
-    std::string name;
-    pid_t pid{0};
-    bool running{true};
-    int status{0};
-};
-
-// keep_fd: a descriptor the program inherits (others are close-on-exec).
-pid_t spawn(const fs::path& exe, const std::vector<std::string>& args, int keep_fd = -1) {
-    std::vector<char*> argv;
-    argv.push_back(const_cast<char*>(exe.c_str()));
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    const pid_t parent = getpid();
-    const pid_t pid = fork();
-    if (pid < 0) throw std::runtime_error("fork failed");
-    if (pid == 0) {
-        prctl(PR_SET_PDEATHSIG, SIGTERM);  // never outlive the launcher
-        if (getppid() != parent) _exit(1);
-        if (keep_fd >= 0) fcntl(keep_fd, F_SETFD, 0);
-        execv(exe.c_str(), argv.data());
-        _exit(127);
-    }
-    return pid;
-}
-
-std::string describe(int status) {
-    if (WIFEXITED(status)) return "exit code " + std::to_string(WEXITSTATUS(status));
-    if (WIFSIGNALED(status)) return "killed by signal " + std::to_string(WTERMSIG(status));
-    return "status " + std::to_string(status);
-}
-
-void reap(std::vector<Child>& children, const std::function<void(Child&)>& on_exit) {
-    while (true) {
-        int st = 0;
-        const pid_t pid = waitpid(-1, &st, WNOHANG);
-        if (pid <= 0) return;
-        for (auto& c : children)
-            if (c.pid == pid && c.running) {
-                c.running = false;
-                c.status = st;
-                on_exit(c);
-            }
-    }
-}
-
-bool any_running(const std::vector<Child>& cs) {
-    for (const auto& c : cs)
-        if (c.running) return true;
-    return false;
-}
-
-void signal_all(std::vector<Child>& cs, int sig) {
-    for (auto& c : cs)
-        if (c.running) kill(c.pid, sig);
-}
-
-// Waits up to `seconds` for all children; returns true when none is left.
-bool wait_all(std::vector<Child>& cs, double seconds, const std::function<void(Child&)>& on_exit) {
-    const double end = steady_now_s() + seconds;
-    while (any_running(cs) && steady_now_s() < end) {
-        reap(cs, on_exit);
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    reap(cs, on_exit);
-    return !any_running(cs);
-}
-
-}  // namespace
 
 int run_direct(const RunConfig& rc, const ComponentRegistry& reg, bool progress, double* steps_per_s) {
     auto comps = rc.build(reg);
@@ -299,11 +227,11 @@ Outcome supervise(std::vector<Child>& children, const RunConfig& rc) {
         // closing line: neither is a cause of its own (logged at debug level).
         const bool follows_clock = WIFEXITED(c.status) && (clock || WEXITSTATUS(c.status) == kExitAborted);
         if (follows_clock) {
-            spdlog::debug("process '{}' (pid {}) ended: {}", c.name, c.pid, describe(c.status));
+            spdlog::debug("process '{}' (pid {}) ended: {}", c.name, c.pid, describe_status(c.status));
             return;
         }
-        out.failures.push_back(c.name + " (" + describe(c.status) + ")");
-        spdlog::warn("process '{}' (pid {}) ended: {}", c.name, c.pid, describe(c.status));
+        out.failures.push_back(c.name + " (" + describe_status(c.status) + ")");
+        spdlog::warn("process '{}' (pid {}) ended: {}", c.name, c.pid, describe_status(c.status));
     };
     while (any_running(children)) {
         reap(children, on_exit);

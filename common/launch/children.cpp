@@ -1,0 +1,78 @@
+#include "launch/children.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+
+#include "framework/lockstep.hpp"
+
+namespace gdnav::runtime {
+
+namespace fs = std::filesystem;
+
+pid_t spawn(const fs::path& exe, const std::vector<std::string>& args, int keep_fd) {
+    std::vector<char*> argv;
+    argv.push_back(const_cast<char*>(exe.c_str()));
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    const pid_t parent = getpid();
+    const pid_t pid = fork();
+    if (pid < 0) throw std::runtime_error("fork failed");
+    if (pid == 0) {
+        prctl(PR_SET_PDEATHSIG, SIGTERM);  // never outlive the launcher
+        if (getppid() != parent) _exit(1);
+        if (keep_fd >= 0) fcntl(keep_fd, F_SETFD, 0);
+        execv(exe.c_str(), argv.data());
+        _exit(127);
+    }
+    return pid;
+}
+
+std::string describe_status(int status) {
+    if (WIFEXITED(status)) return "exit code " + std::to_string(WEXITSTATUS(status));
+    if (WIFSIGNALED(status)) return "killed by signal " + std::to_string(WTERMSIG(status));
+    return "status " + std::to_string(status);
+}
+
+void reap(std::vector<Child>& children, const std::function<void(Child&)>& on_exit) {
+    while (true) {
+        int st = 0;
+        const pid_t pid = waitpid(-1, &st, WNOHANG);
+        if (pid <= 0) return;
+        for (auto& c : children)
+            if (c.pid == pid && c.running) {
+                c.running = false;
+                c.status = st;
+                on_exit(c);
+            }
+    }
+}
+
+bool any_running(const std::vector<Child>& cs) {
+    for (const auto& c : cs)
+        if (c.running) return true;
+    return false;
+}
+
+void signal_all(std::vector<Child>& cs, int sig) {
+    for (auto& c : cs)
+        if (c.running) kill(c.pid, sig);
+}
+
+bool wait_all(std::vector<Child>& cs, double seconds, const std::function<void(Child&)>& on_exit) {
+    const double end = steady_now_s() + seconds;
+    while (any_running(cs) && steady_now_s() < end) {
+        reap(cs, on_exit);
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    reap(cs, on_exit);
+    return !any_running(cs);
+}
+
+}  // namespace gdnav::runtime
