@@ -162,6 +162,7 @@ void DdsHost::Impl::finish(int code) {
             control.send_status(l, msg::STATUS_EXIT, "exit code " + std::to_string(code));
         if (!l.killed) l.comp->finish(code == kExitOk);
     }
+    if (!step_error.empty() || code != kExitOk) control.flush_statuses();
     control.report_foreign();
     inputs.report_lateness(locals, rc.out_dir);
     host::Inputs::report_rejected(locals);

@@ -54,6 +54,8 @@ void ControlPlane::send_status(const Local& l, msg::StatusKind kind, const std::
     status_writer_->write(&status_out_);
 }
 
+void ControlPlane::flush_statuses() { status_writer_->wait_for_acknowledgments(eprosima::fastrtps::Duration_t(1, 0)); }
+
 void ControlPlane::send_done(const Local& l, std::uint64_t k) {
     done_.run_id(timing_.ri.run_index);
     done_.step(k);

@@ -65,6 +65,9 @@ public:
 
     void heartbeat(double now, const std::vector<Local>& locals);
     void send_status(const Local& l, msg::StatusKind kind, const std::string& message);
+    // Waits, at most 1 s, until the clock has acknowledged the statuses sent: a member's last status (its error or
+    // exit code) must reach the clock before the process ends, or the clock only sees its heartbeats stop.
+    void flush_statuses();
     void send_done(const Local& l, std::uint64_t k);
 
     [[nodiscard]] Phase phase() const { return phase_; }
