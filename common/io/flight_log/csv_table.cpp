@@ -10,6 +10,10 @@
 
 namespace gdnav::app {
 
+void input_error(const std::string& where, const std::string& what) {
+    throw config::ConfigError("config error: " + where + ": " + what);
+}
+
 namespace {
 
 std::string trim(const std::string& s) {

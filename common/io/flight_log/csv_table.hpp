@@ -9,6 +9,9 @@
 
 namespace gdnav::app {
 
+// Throws the one-line ConfigError "config error: WHERE: WHAT" of a flight log's files.
+[[noreturn]] void input_error(const std::string& where, const std::string& what);
+
 struct CsvTable {
     std::string file;
     std::vector<std::string> columns;  // in the order requested from read_csv

@@ -21,10 +21,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-[[noreturn]] void fail(const std::string& where, const std::string& what) {
-    throw config::ConfigError("config error: " + where + ": " + what);
-}
-
 std::string fmt_exact(double v) {
     char b[48];
     std::snprintf(b, sizeof(b), "%.17g", v);
@@ -64,9 +60,9 @@ void check_times(const LoadedGroup& g, double max_gap_s) {
     for (std::size_t i = 1; i < t.rows(); ++i) {
         const double a = t.at(i - 1, 0), b = t.at(i, 0);
         const std::string where = t.file + ":" + std::to_string(t.lines[i]);
-        if (!(b > a)) fail(where, "column 't_s': " + fmt_t(b) + " s is not after the previous row's " + fmt_t(a) + " s (times must increase)");
+        if (!(b > a)) input_error(where, "column 't_s': " + fmt_t(b) + " s is not after the previous row's " + fmt_t(a) + " s (times must increase)");
         if (!g.group->fixes && b - a > max_gap_s)
-            fail(where, "column 't_s': gap of " + fmt_t(b - a) + " s after t = " + fmt_t(a) + " s (at most " +
+            input_error(where, "column 't_s': gap of " + fmt_t(b - a) + " s after t = " + fmt_t(a) + " s (at most " +
                             fmt_t(max_gap_s) + " s, --max-gap)");
     }
 }
@@ -109,7 +105,7 @@ public:
             if (x < -0.5 || x >= static_cast<double>(steps) - 0.5) continue;  // outside the grid
             const auto k = static_cast<std::uint64_t>(std::llround(x));
             if (fix_row_[k] >= 0)
-                fail(t.file + ":" + std::to_string(t.lines[r]),
+                input_error(t.file + ":" + std::to_string(t.lines[r]),
                      "column 't_s': second fix on grid step " + std::to_string(k) + " (line " +
                          std::to_string(t.lines[static_cast<std::size_t>(fix_row_[k])]) + "): fixes closer than dt");
             fix_row_[k] = static_cast<std::int64_t>(r);
@@ -133,11 +129,11 @@ private:
 };
 
 void check_options(const ImportOptions& o) {
-    if (!(o.dt_s > 0.0) || !std::isfinite(o.dt_s)) fail("--dt", "must be a positive number of seconds");
-    if (!std::isfinite(o.t0_s)) fail("--t0", "must be a finite time in seconds");
-    if (!(o.max_gap_s > 0.0)) fail("--max-gap", "must be positive");
+    if (!(o.dt_s > 0.0) || !std::isfinite(o.dt_s)) input_error("--dt", "must be a positive number of seconds");
+    if (!std::isfinite(o.t0_s)) input_error("--t0", "must be a finite time in seconds");
+    if (!(o.max_gap_s > 0.0)) input_error("--max-gap", "must be positive");
     std::error_code ec;
-    if (!fs::is_directory(o.csv_dir, ec)) fail(o.csv_dir.string(), "not a directory");
+    if (!fs::is_directory(o.csv_dir, ec)) input_error(o.csv_dir.string(), "not a directory");
 }
 
 // The sensor files present in the folder, read and checked.
@@ -152,7 +148,7 @@ std::vector<LoadedGroup> load_groups(const ImportOptions& o) {
         loaded.push_back({&g, read_csv(f, csv_columns(g.fields, true))});
         check_times(loaded.back(), o.max_gap_s);
     }
-    if (loaded.empty()) fail(o.csv_dir.string(), "no sensor file (" + names + ")");
+    if (loaded.empty()) input_error(o.csv_dir.string(), "no sensor file (" + names + ")");
     return loaded;
 }
 
@@ -164,13 +160,13 @@ std::uint64_t grid_steps(const std::vector<LoadedGroup>& loaded, const ImportOpt
         const CsvTable& t = g.table;
         const double first = t.at(0, 0), last = t.at(t.rows() - 1, 0);
         if (first > o.t0_s + kSnapS)
-            fail(t.file + ":" + std::to_string(t.lines[0]),
+            input_error(t.file + ":" + std::to_string(t.lines[0]),
                  "column 't_s': first sample at t = " + fmt_t(first) + " s, after the grid start --t0 " + fmt_t(o.t0_s) + " s");
         const double n = std::floor((last - o.t0_s + kSnapS) / o.dt_s) + 1.0;
         const auto steps = static_cast<std::uint64_t>(n);
         if (!covered || steps < *covered) covered = steps;
         if (o.steps && *o.steps > steps)
-            fail(t.file + ":" + std::to_string(t.lines.back()),
+            input_error(t.file + ":" + std::to_string(t.lines.back()),
                  "column 't_s': last sample at t = " + fmt_t(last) + " s, before the last grid step t = " +
                      fmt_t(o.t0_s + static_cast<double>(*o.steps - 1) * o.dt_s) + " s of --steps " +
                      std::to_string(*o.steps));
@@ -180,7 +176,7 @@ std::uint64_t grid_steps(const std::vector<LoadedGroup>& loaded, const ImportOpt
         const CsvTable& t = loaded.front().table;
         steps = static_cast<std::uint64_t>(std::max(0.0, std::llround((t.at(t.rows() - 1, 0) - o.t0_s) / o.dt_s) + 1.0));
     }
-    if (steps == 0) fail("--steps", "the grid has no step");
+    if (steps == 0) input_error("--steps", "the grid has no step");
     return steps;
 }
 
@@ -199,7 +195,7 @@ std::optional<CsvTable> load_alignment(const ImportOptions& o) {
     for (const auto& c : csv_columns(al.mag, false)) cols.push_back(c);
     CsvTable align = read_csv(align_file, cols);
     if (align.rows() != 1)
-        fail(align.file + ":" + std::to_string(align.lines[1]), "one data row expected (the alignment at t0)");
+        input_error(align.file + ":" + std::to_string(align.lines[1]), "one data row expected (the alignment at t0)");
     return align;
 }
 
@@ -261,7 +257,7 @@ void write_recording(const fs::path& record_dir, const std::vector<std::string>&
         w.close(true);
     } catch (const std::runtime_error& e) {
         if (dynamic_cast<const config::ConfigError*>(&e)) throw;
-        fail(record_dir.string(), e.what());
+        input_error(record_dir.string(), e.what());
     }
 }
 

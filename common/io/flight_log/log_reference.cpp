@@ -18,10 +18,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-[[noreturn]] void fail(const std::string& where, const std::string& what) {
-    throw config::ConfigError("config error: " + where + ": " + what);
-}
-
 std::string fmt_t(double t) {
     char b[48];
     std::snprintf(b, sizeof(b), "%.6f", t);
@@ -31,7 +27,7 @@ std::string fmt_t(double t) {
 // The column names of the header row (the first line that is neither empty nor a '#' comment).
 std::vector<std::string> header_of(const fs::path& file) {
     std::ifstream in(file);
-    if (!in) fail(file.string(), "cannot open file (--reference)");
+    if (!in) input_error(file.string(), "cannot open file (--reference)");
     std::string line;
     while (std::getline(in, line)) {
         auto trim = [](const std::string& s) {
@@ -47,7 +43,7 @@ std::vector<std::string> header_of(const fs::path& file) {
         names.push_back(trim(s.substr(start)));
         return names;
     }
-    fail(file.string(), "no header row (--reference)");
+    input_error(file.string(), "no header row (--reference)");
 }
 
 // Which of the accepted column sets the header uses; the columns to read, in the order the conversion expects.
@@ -108,17 +104,17 @@ ReferenceTrack::ReferenceTrack(const fs::path& file, const ImportOptions& o, std
         const double* a = t.row(r);
         const std::string where = t.file + ":" + std::to_string(t.lines[r]);
         if (r > 0 && !(a[0] > t_.back()))
-            fail(where, "column 't_s': " + fmt_t(a[0]) + " s is not after the previous row's " + fmt_t(t_.back()) +
+            input_error(where, "column 't_s': " + fmt_t(a[0]) + " s is not after the previous row's " + fmt_t(t_.back()) +
                             " s (times must increase)");
         if (r > 0 && a[0] - t_.back() > o.max_gap_s)
-            fail(where, "column 't_s': gap of " + fmt_t(a[0] - t_.back()) + " s after t = " + fmt_t(t_.back()) +
+            input_error(where, "column 't_s': gap of " + fmt_t(a[0] - t_.back()) + " s after t = " + fmt_t(t_.back()) +
                             " s (at most " + fmt_t(o.max_gap_s) + " s, --max-gap)");
         math::Quat q;
         if (l.attitude == Layout::Attitude::quaternion) {
             q = math::Quat(a[7], a[8], a[9], a[10]);
             const double n = q.norm();
             if (std::abs(n - 1.0) > 1e-6)
-                fail(where, "columns 'q_nb_0..3': norm " + std::to_string(n) + " is not 1 (a unit quaternion w, x, y, z)");
+                input_error(where, "columns 'q_nb_0..3': norm " + std::to_string(n) + " is not 1 (a unit quaternion w, x, y, z)");
         } else {
             const double s = l.attitude == Layout::Attitude::euler_deg ? math::deg2rad(1.0) : 1.0;
             q = math::quat_from_euler({a[7] * s, a[8] * s, a[9] * s});
@@ -135,7 +131,7 @@ ReferenceTrack::ReferenceTrack(const fs::path& file, const ImportOptions& o, std
     }
     const double first_s = o.t0_s, last_s = o.t0_s + static_cast<double>(steps - 1) * o.dt_s;
     if (t_.empty() || t_.front() > first_s + kSnapS || t_.back() < last_s - kSnapS)
-        fail(file_, "the reference spans t = " + (t_.empty() ? std::string("nothing") : fmt_t(t_.front()) + " .. " + fmt_t(t_.back()) + " s") +
+        input_error(file_, "the reference spans t = " + (t_.empty() ? std::string("nothing") : fmt_t(t_.front()) + " .. " + fmt_t(t_.back()) + " s") +
                         ", the grid t = " + fmt_t(first_s) + " .. " + fmt_t(last_s) +
                         " s: it must cover every step (shorten the grid with --steps)");
 }
