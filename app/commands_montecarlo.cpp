@@ -29,6 +29,7 @@ BatchSpec batch_spec(const McArgs& a, const CliContext& ctx) {
     b.runs = a.runs;
     b.jobs = a.jobs;
     b.layout = a.layout;
+    b.domain = a.domain;
     b.out = a.out;
     b.log_level = ctx.log_level;
     return b;
@@ -76,6 +77,9 @@ CLI::App* add_montecarlo_command(CLI::App& app, CliContext& ctx, CommandRunner& 
     sub->add_option("--layout", a->layout, "direct | composed | distributed")
         ->check(CLI::IsMember({"direct", "composed", "distributed"}));
     sub->add_option("--out", a->out, "batch directory")->required();
+    sub->add_option("--domain", a->domain, "DDS domain of the first parallel slot: slot k of --jobs uses D+k "
+                                           "(default: each run takes one no other run of this host uses)")
+        ->check(CLI::Range(0, 232));
     sub->add_option("--steps", a->steps, "override the number of steps of every run");
     sub->add_option("--set", a->o.sets, "override a key: path.to.key=value (YAML value; ~ removes)");
     sub->add_option("--grade", a->o.grades, "sensor grade for every group (NAME) or one group (GROUP=NAME)");

@@ -142,6 +142,7 @@ CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
         if (!a->plan.empty()) return run_with_plan(*a, *sub, ctx);
         RunConfig rc = run_config_of(*a, *sub);
         a->rw.live = sub->count("--live") > 0;
+        a->rw.keep_domain = sub->count("--domain") > 0 || sub->count("--scenario") > 0;
         if (!a->rw.empty()) rc = apply_run_rewrites(rc, a->rw, ctx.registry);
         LaunchOptions lo;
         lo.layout = a->layout;

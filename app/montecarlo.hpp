@@ -19,6 +19,7 @@ struct McArgs {
     bool seed_given{false};  // --seed given (else the scenario file's seed, or 1)
     unsigned jobs{2};
     std::string layout{"direct"};
+    int domain{-1};  // --domain (first DDS domain of the slots), -1: not given
     std::string out;
     std::uint64_t steps{0};
     scenario::Overrides o;

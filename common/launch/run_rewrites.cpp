@@ -149,8 +149,8 @@ void add_replay(YAML::Node root, const RunConfig& rc, const RunRewrites& rw, con
         if (std::find(removed.begin(), removed.end(), e) == removed.end()) essential.push_back(e);
     essential.push_back(kReplayName);
     root["run"]["essential"] = sequence(essential);
-    // A fresh DDS domain (the launcher picks one) rather than the recorded run's.
-    root["run"].remove("domain_id");
+    // A fresh DDS domain (the launcher picks one) rather than the recorded run's, unless this run chose one.
+    if (!rw.keep_domain) root["run"].remove("domain_id");
     // Without a replayed Truth the physics flies its own trajectory, which is no reference for recorded sensors:
     // the navigation recorders score nothing (docs/replay.md).
     if (!replayed.count(topics::kTruth))

@@ -25,6 +25,8 @@ struct RunRewrites {
     std::string live_bind;                   // --live-bind ADDR ("" = the member's default, 127.0.0.1)
     std::uint64_t live_decimation{0};        // --live-decimation N (0 = not given: every step)
     std::vector<std::string> live_topics;    // --live-topics (empty = every data topic and the viewer channels)
+    bool keep_domain{false};                 // the run's domain_id was chosen for this run (--domain, or the
+                                             // --scenario file's): a replay keeps it instead of the recorded run's
     [[nodiscard]] bool empty() const {
         return record.empty() && replay_dir.empty() && replay_topics.empty() && !live && live_bind.empty() &&
                live_decimation == 0 && live_topics.empty();

@@ -32,6 +32,7 @@ namespace {
 
 struct Worker {
     std::uint64_t run{0};
+    unsigned slot{0};  // of spec.jobs: with a first domain D, the run's domain is D + slot
     pid_t pid{0};
     double started_s{0.0};
     fs::path dir;
@@ -162,7 +163,30 @@ struct PreparedBatch {
     std::uint64_t seed{0};
     double sim_per_run_s{0.0};
     std::vector<std::uint64_t> mine;  // this shard's run indices
+    int first_domain{-1};             // >= 0: slot k runs on DDS domain first_domain + k
 };
+
+// The domain of slot 0: --domain, else the document's run.domain_id (a batch's runs cannot share one domain, so a
+// given domain is the first of `jobs` consecutive ones), else none (each run takes a free one).
+int first_domain(const BatchSpec& spec) {
+    int d = spec.domain;
+    std::string key = "--domain";
+    if (d < 0 && spec.doc["run"] && spec.doc["run"]["domain_id"]) {
+        key = "run.domain_id";
+        try {
+            d = spec.doc["run"]["domain_id"].as<int>();
+        } catch (const YAML::Exception&) {
+            d = -1;
+        }
+        if (d < 0 || d > 232)
+            throw config::ConfigError("config error: " + spec.file.string() + ": run.domain_id: must be an integer in [0, 232]");
+    }
+    if (d >= 0 && d + static_cast<int>(spec.jobs) - 1 > 232)
+        throw config::ConfigError("config error: " + key + " " + std::to_string(d) + " with --jobs " +
+                                  std::to_string(spec.jobs) + ": the slots need domains " + std::to_string(d) + ".." +
+                                  std::to_string(d + static_cast<int>(spec.jobs) - 1) + ", above 232 (the highest DDS domain)");
+    return d;
+}
 
 PreparedBatch prepare_batch(const BatchSpec& spec, const ComponentRegistry& reg, const Shard& shard) {
     const std::string text = batch_scenario_text(spec);
@@ -172,6 +196,7 @@ PreparedBatch prepare_batch(const BatchSpec& spec, const ComponentRegistry& reg,
     const RunConfig rc0 = RunConfig::parse(text, spec.file.string(), ro);
     (void)rc0.build(reg);
     PreparedBatch p;
+    p.first_domain = first_domain(spec);
     p.seed = rc0.info.seed;
     p.sim_per_run_s = static_cast<double>(rc0.info.steps) * rc0.info.dt_s;
     p.dir = fs::absolute(spec.out);
@@ -255,21 +280,30 @@ private:
         while (!interrupted_ && next_ < todo_.size() && workers_.size() < spec_.jobs) {
             Worker w;
             w.run = todo_[next_++];
+            w.slot = free_slot();
             w.dir = p_.dir / "runs" / run_dir_name(w.run);
             std::error_code ec;
             fs::remove_all(w.dir, ec);  // stale files of an interrupted attempt
             fs::create_directories(w.dir);
-            // No --domain: each run takes a DDS domain no other run of this host uses (launch/domain_lock.hpp).
-            const std::vector<std::string> args{"run",         "--scenario", (p_.dir / "scenario.yaml").string(),
-                                                "--seed",      std::to_string(p_.seed),
-                                                "--run",       std::to_string(w.run),
-                                                "--layout",    spec_.layout,
-                                                "--out",       w.dir.string(),
-                                                "--log-level", spec_.log_level};
+            std::vector<std::string> args{"run",         "--scenario", (p_.dir / "scenario.yaml").string(),
+                                          "--seed",      std::to_string(p_.seed),
+                                          "--run",       std::to_string(w.run),
+                                          "--layout",    spec_.layout,
+                                          "--out",       w.dir.string(),
+                                          "--log-level", spec_.log_level};
+            // Without a first domain each run takes a DDS domain no other run of this host uses (launch/domain_lock.hpp).
+            if (p_.first_domain >= 0)
+                args.insert(args.end(), {"--domain", std::to_string(p_.first_domain + static_cast<int>(w.slot))});
             w.pid = spawn_logged(exe_, args, w.dir / "log.txt");
             w.started_s = steady_now_s();
             workers_.push_back(w);
         }
+    }
+
+    // The lowest parallel slot no running worker holds.
+    unsigned free_slot() const {
+        for (unsigned s = 0;; ++s)
+            if (std::none_of(workers_.begin(), workers_.end(), [s](const Worker& w) { return w.slot == s; })) return s;
     }
 
     // Reaps one ended child, if any; true when a child was reaped.
@@ -338,6 +372,9 @@ int run_batch_shard(const BatchSpec& spec, const ComponentRegistry& reg, const S
     spdlog::info("montecarlo:{} {} runs of {} (seed {}, runs {}..{}, layout {}, {} jobs) -> {}; {} already complete",
                  which, p.mine.size(), spec.file.filename().string(), p.seed, spec.first, spec.first + spec.runs - 1,
                  spec.layout, spec.jobs, p.dir.string(), skipped);
+    if (p.first_domain >= 0 && spec.layout != "direct")
+        spdlog::info("montecarlo: DDS domains {}..{} (one per parallel slot)", p.first_domain,
+                     p.first_domain + static_cast<int>(spec.jobs) - 1);
     ShardRun r(spec, p, std::move(todo), skipped);
     r.run();
     return r.finish(which);

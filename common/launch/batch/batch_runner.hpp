@@ -2,8 +2,9 @@
 // A Monte Carlo batch, or one shard of it, run as parallel `gdnav run` child processes into a batch directory
 // (batch_dir.hpp), resumably (complete runs of the same seed are kept), with a live progress line on stderr.
 // Each run: <exe> run --scenario DIR/scenario.yaml --seed S --run i --layout L --out DIR/runs/run_000i
-//           --domain D --log-level LEVEL
-// where <exe> is this program (/proc/self/exe) and D a domain of its own per parallel slot.
+//           [--domain D] --log-level LEVEL
+// where <exe> is this program (/proc/self/exe) and D, when a first domain is given, the domain of the run's
+// parallel slot.
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -26,6 +27,8 @@ struct BatchSpec {
     std::uint64_t runs{1};
     unsigned jobs{2};             // runs in parallel (recorded in batch.yaml for a whole batch)
     std::string layout{"direct"};
+    int domain{-1};               // >= 0 (--domain): slot k of `jobs` runs on DDS domain domain + k; else each run
+                                  // takes a domain no other run of this host uses, or the document's run.domain_id
     std::filesystem::path out;    // the batch directory
     std::string log_level{"info"};
 };
