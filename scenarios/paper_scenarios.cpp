@@ -1,5 +1,6 @@
 #include "paper_scenarios.hpp"
 
+#include <cmath>
 #include <optional>
 
 #include "random/stream.hpp"
@@ -110,6 +111,19 @@ std::vector<std::string> members_of_type(const YAML::Node& comps, const std::str
     return v;
 }
 
+// Moves run.t0_s back by `dt_s` and lengthens the run by as much (duration_s, or steps when the file gives steps).
+void start_earlier(YAML::Node& doc, double dt_s, const std::string& origin) {
+    YAML::Node run = doc["run"];
+    if (!run || !run.IsMap()) throw ConfigError("config error: " + origin + ": key 'run': missing (required)");
+    const Config rc = Config::wrap(run, origin, "run");
+    const double dt = rc.get_double("dt_s", 0.01, Range{1e-4, 1.0});
+    run["t0_s"] = number(rc.get_double("t0_s", 0.0, Range{-1e6, 1e6}) - dt_s);
+    if (run["steps"])
+        run["steps"] = rc.get_int("steps", 1, 100'000'000) + static_cast<std::int64_t>(std::llround(dt_s / dt));
+    else
+        run["duration_s"] = number(rc.get_double("duration_s", Range{dt, 1e6}) + dt_s);
+}
+
 }  // namespace
 
 PaperDraws draw_paper_scenario(int scenario, std::uint64_t seed, std::uint64_t run_index, const Config* options) {
@@ -137,8 +151,10 @@ PaperDraws draw_paper_scenario(int scenario, std::uint64_t seed, std::uint64_t r
         d.offsets = atm::draw_offsets_scenario2(os);
     }
     d.earth = earth::draw_earth_truth(es);
-    if (options)
+    if (options) {
         if (auto f = options->optional_child("fixed")) apply_fixed(*f, scenario, d.mission);
+        if (auto c = options->optional_child("calibration")) d.calibration = parse_calibration(*c);
+    }
     return d;
 }
 
@@ -154,7 +170,9 @@ YAML::Node paper_mission_yaml(const PaperDraws& d) {
     mission["name"] = "paper_scenario" + std::to_string(d.scenario) + "_seed" + std::to_string(d.seed) + "_run" +
                       std::to_string(d.run_index);
     mission["t_end_s"] = number(d.t_end_s);
-    YAML::Node ops(YAML::NodeType::Sequence);
+    YAML::Node ops = d.calibration ? calibration_operations(*d.calibration, c.airspeed_ini_mps,
+                                                            c.pressure_altitude_ini_m, c.bearing_ini_rad)
+                                   : YAML::Node(YAML::NodeType::Sequence);
     YAML::Node hold;
     hold["op"] = "hold";
     hold["throttle"] = channel("airspeed", "airspeed_mps", number(c.airspeed_ini_mps));
@@ -197,6 +215,8 @@ GeneratedScenario generate_paper_scenario(int scenario, const YAML::Node& doc_in
     if (options) options->finish();
     g.doc.remove("generator");
     const PaperDraws& d = g.draws;
+    if (d.calibration) start_earlier(g.doc, calibration_duration_s(*d.calibration, d.mission.common.airspeed_ini_mps),
+                                     origin);
 
     YAML::Node comps = g.doc["components"];
     if (!comps || !comps.IsMap()) throw ConfigError("config error: " + origin + ": key 'components': missing (required)");

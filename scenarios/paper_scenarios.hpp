@@ -26,13 +26,18 @@
 //   fixed:               draws to fix instead of drawing (the others are still drawn, from the same streams):
 //     bearing_ini_deg, bearing_end_deg, airspeed_ini_mps, airspeed_end_mps, airspeed_delay_s, altitude_delay_s,
 //     Hp_ini_m, Hp_end_m, turn_time_s; scenario #2 also legs_s: [7 values], bearings_deg: [7 values]
+//   calibration:         a GNSS-aided calibration pattern flown before the file's t0 (calibration_pattern.hpp): the
+//                        run starts earlier, the pattern's operations go before the drawn mission; it draws nothing,
+//                        so every draw above is the same with and without it
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
 
 #include "atmosphere/offsets_ramp.hpp"
+#include "calibration_pattern.hpp"
 #include "config/config.hpp"
 #include "earth/gravity.hpp"
 #include "flight_physics/model/wind_ramp.hpp"
@@ -50,6 +55,7 @@ struct PaperDraws {
     physics::WindRampParams wind;
     atm::OffsetsRampParams offsets;
     earth::EarthTruthParams earth;
+    std::optional<CalibrationPattern> calibration;  // generator option, not a draw
 };
 
 // Draws scenario `scenario` (1 or 2) for (seed, run_index). `options` is the generator section (may be null).
@@ -57,7 +63,8 @@ PaperDraws draw_paper_scenario(int scenario, std::uint64_t seed, std::uint64_t r
                                const config::Config* options);
 // The mission flown (guidance::make_scenario1_mission / make_scenario2_mission of the draws).
 guidance::Mission paper_mission(const PaperDraws& d);
-// The mission as an inline YAML mapping (config/missions format).
+// The mission as an inline YAML mapping (config/missions format), with the calibration pattern's operations first
+// when the option is on.
 YAML::Node paper_mission_yaml(const PaperDraws& d);
 
 struct GeneratedScenario {

@@ -23,6 +23,7 @@ std::string describe(const PaperDraws& d) {
                   static_cast<unsigned long long>(d.seed), static_cast<unsigned long long>(d.run_index), d.t_gnss_s,
                   d.t_end_s);
     s += b;
+    if (d.calibration) s += describe_calibration(*d.calibration, c.airspeed_ini_mps);
     s += "mission (streams scenario/mission):\n";
     std::snprintf(b, sizeof(b), "  initial     V_ini %.3f m/s, Hp_ini %.1f m, chi_0 %+.0f deg\n", c.airspeed_ini_mps,
                   c.pressure_altitude_ini_m, deg(c.bearing_ini_rad));

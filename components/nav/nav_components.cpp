@@ -1,17 +1,24 @@
 #include "nav_components.hpp"
 
 #include <cstdint>
+#include <algorithm>
+#include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include <spdlog/spdlog.h>
 
 #include "model/air_data_filter.hpp"
+#include "model/alignment_monitor.hpp"
 #include "model/attitude_filter.hpp"
 #include "model/position_filter.hpp"
+#include "model/yaw_gsf.hpp"
 #include "nav_convert.hpp"
 #include "framework/run_config.hpp"
+#include "framework/msg_eigen.hpp"
+#include "msgs/alignment_messages.hpp"
 #include "rejection_report.hpp"
 
 namespace gdnav::nav {
@@ -127,10 +134,52 @@ private:
 };
 
 // ------------------------------------------------------------------------------------------------ nav_att
+// Heading from GNSS velocity fused into the attitude filter (nav_att option `yaw_from_gnss`): the estimator's keys
+// (yaw_gsf.cpp) and fuse_sigma_max_deg [0.1, 30] (3: fuse only once the bank has decided), fuse_sigma_min_deg
+// [0.01, 30] (1: floor of the fused sigma, as the estimate's errors are correlated from fix to fix).
+struct GnssYaw {
+    YawGsf gsf;
+    double fuse_sigma_max_rad{0.0};
+    double fuse_sigma_min_rad{0.0};
+};
+
 class NavAtt final : public VariantFilterComponent<AttitudeFilter, kAttitudeSection> {
 public:
     using VariantFilterComponent::VariantFilterComponent;
+    void configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream& stream) override {
+        VariantFilterComponent::configure(cfg, run, stream);
+        if (auto c = cfg.optional_child("yaw_from_gnss")) {
+            yaw_.emplace();
+            yaw_->gsf = YawGsf(parse_yaw_gsf(*c));
+            yaw_->fuse_sigma_max_rad = c->get_angle_deg("fuse_sigma_max_deg", config::Range{0.1, 30.0});
+            yaw_->fuse_sigma_min_rad = c->get_angle_deg("fuse_sigma_min_deg", config::Range{0.01, 30.0});
+            c->finish();
+        }
+    }
     void step(const runtime::StepContext& ctx) override {
+        step_filter(ctx);
+        if (yaw_ && filter_.initialized()) step_yaw();
+    }
+
+private:
+    void step_yaw() {
+        const bool fix = gnss_.available() && gnss_.get().fix_valid();
+        YawGsf& g = yaw_->gsf;
+        if (!g.started()) {
+            if (fix) g.start(runtime::to_vec3(gnss_.get().v_n_mps()));
+            return;
+        }
+        const AttitudeEstimate& e = out_est_;
+        g.predict(filter_.tuning().dt_s, runtime::to_vec3(imu_.get().w_b_rps()) - e.gyr_bias_rps,
+                  runtime::to_vec3(imu_.get().f_b_mps2()), e.euler_rad.y(), e.euler_rad.z());
+        if (!fix) return;
+        g.update(runtime::to_vec3(gnss_.get().v_n_mps()));
+        const double var = g.yaw_variance_rad2();
+        if (var > yaw_->fuse_sigma_max_rad * yaw_->fuse_sigma_max_rad) return;
+        (void)filter_.fuse_yaw(g.yaw_rad(), std::max(var, yaw_->fuse_sigma_min_rad * yaw_->fuse_sigma_min_rad));
+    }
+
+    void step_filter(const runtime::StepContext& ctx) {
         if (!imu_.available() || !mag_.available()) return;
         const ImuSample imu = from_msg(imu_.get());
         const MagSample mag = from_msg(mag_.get());
@@ -149,6 +198,7 @@ public:
             e = filter_.initialize(ctx.k, ctx.t_s, imu, mag, from_msg(air_.get()), gnss, &align);
         }
         to_msg(e, out_.value());
+        out_est_ = e;
         report_counts(ctx);
     }
 
@@ -166,13 +216,54 @@ private:
     Input<msg::PositionEstimate> pos_prev_{*this, topics::kPosition, Lag::Previous};
     Output<msg::AttitudeEstimate> out_{*this, topics::kAttitude};
     PositionEstimate last_pos_;
+    AttitudeEstimate out_est_;
+    std::optional<GnssYaw> yaw_;
 };
 
 // ------------------------------------------------------------------------------------------------ nav_pos
 class NavPos final : public VariantFilterComponent<PositionFilter, kPositionSection> {
 public:
     using VariantFilterComponent::VariantFilterComponent;
+    void configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream& stream) override {
+        VariantFilterComponent::configure(cfg, run, stream);
+        if (auto c = cfg.optional_child("alignment_check")) {  // only then is there an alignment topic
+            monitor_.emplace(parse_alignment_criteria(*c), run.dt_s);
+            align_out_ = std::make_unique<Output<msg::NavAlignment>>(*this, topics::kAlignment);
+        }
+    }
     void step(const runtime::StepContext& ctx) override {
+        const std::uint64_t accepted_before = filter_.gate_accepted();
+        step_filter(ctx);
+        if (monitor_ && filter_.initialized() && att_.available()) step_monitor(ctx, accepted_before);
+    }
+
+private:
+    void step_monitor(const runtime::StepContext& ctx, std::uint64_t accepted_before) {
+        const msg::AttitudeEstimate& att = att_.get();
+        if (!monitor_->started()) {
+            const auto& p = filter_.aided_covariance();
+            monitor_->start(std::max(att.att_sigma_rad()[0], att.att_sigma_rad()[1]),
+                            std::sqrt(std::max(p(aided::kE, aided::kE), p(aided::kE + 1, aided::kE + 1))));
+        }
+        const double d2 = filter_.gate_d2_last();
+        const bool was_aligned = monitor_->aligned();
+        monitor_->step(ctx.t_s, runtime::to_vec3(imu_.get().f_b_mps2()), runtime::to_quat(att.q_nb()),
+                       att.att_sigma_rad()[2], filter_.gate_accepted() > accepted_before ? &d2 : nullptr,
+                       filter_.gnss_denied());
+        if (monitor_->aligned() && !was_aligned)
+            publish_status(fmt::format("aligned at t = {:.2f} s: tilt sigma {:.3f} deg, yaw sigma {:.3f} deg, mean "
+                                       "GNSS d2 {:.2f}",
+                                       ctx.t_s, math::rad2deg(monitor_->tilt_sigma_rad()),
+                                       math::rad2deg(monitor_->yaw_sigma_rad()), monitor_->nis_mean()));
+        auto& o = align_out_->value();
+        o.aligned(monitor_->aligned());
+        o.t_aligned_s(monitor_->t_aligned_s());
+        o.tilt_sigma_rad(monitor_->tilt_sigma_rad());
+        o.yaw_sigma_rad(monitor_->yaw_sigma_rad());
+        o.gnss_nis_mean(monitor_->nis_mean());
+    }
+
+    void step_filter(const runtime::StepContext& ctx) {
         if (!imu_.available() || !air_.available() || !att_.available()) return;
         GnssSample gnss;  // fix_valid false unless a sample is there
         if (gnss_.available()) {
@@ -231,6 +322,8 @@ public:
         report_counts(ctx);
         to_msg(e, out_.value());
     }
+
+public:
     void finish(bool) override {
         if (total() > 0 || filter_.reacquisitions() > 0) {
             spdlog::info("[{}] {}", name(), counts(true));
@@ -251,6 +344,8 @@ private:
     }
     double t_gate_status_s_{-std::numeric_limits<double>::infinity()};
     double t_lost_s_{0.0};
+    std::optional<AlignmentMonitor> monitor_;
+    std::unique_ptr<Output<msg::NavAlignment>> align_out_;
 
     Input<msg::ImuSample> imu_{*this, topics::kImu};
     Input<msg::GnssSample> gnss_{*this, topics::kGnss};

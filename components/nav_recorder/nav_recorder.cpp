@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "h5_file.hpp"
 #include "metrics/run_metrics.hpp"
 #include "metrics/run_record.hpp"
+#include "msgs/alignment_messages.hpp"
 #include "msgs/messages.hpp"
 #include "io/run_series/series_columns.hpp"
 
@@ -67,6 +69,8 @@ public:
         if (reference != "truth" && reference != "none")
             cfg.fail("reference", "'" + reference + "' is not one of truth, none");
         reference_ = reference == "truth";
+        if (cfg.get_bool("alignment", false))  // in-flight alignment runs only: the time to align in metrics.yaml
+            align_ = std::make_unique<runtime::Input<msg::NavAlignment>>(*this, topics::kAlignment);
         if (cfg.get_bool("gnss_track", true))
             gnss_ = std::make_unique<runtime::Input<msg::GnssSample>>(*this, topics::kGnss);
         dir_ = run.out_dir;
@@ -89,6 +93,8 @@ public:
             err = metrics::nav_errors(estimate_state(air_.get(), att_.get(), pos_.get()), truth_state(t), origin_.radii);
             metrics_.add_errors(ctx.t_s, ctx.dt_s, *err);
         }
+        if (align_ && align_->available() && align_->get().aligned() && !t_aligned_s_)
+            t_aligned_s_ = align_->get().t_aligned_s();
         last_k_ = ctx.k;
         ++steps_;
         if (dir_.empty()) return;
@@ -218,6 +224,17 @@ private:
             fs::path(dir_) / "metrics.yaml",
             reference_ ? metrics::make_run_record(metrics_, complete, run_.seed, run_.run_index, steps_)
                        : metrics::make_unreferenced_record(complete, run_.seed, run_.run_index, steps_, metrics_.t_gnss_s()));
+        if (align_) append_alignment(fs::path(dir_) / "metrics.yaml");
+    }
+
+    // `alignment:` of metrics.yaml: when the navigation declared itself aligned (never: aligned false, no times).
+    void append_alignment(const fs::path& file) const {
+        std::ofstream f(file, std::ios::app);
+        if (t_aligned_s_)
+            f << "alignment: {aligned: true, t_aligned_s: " << *t_aligned_s_
+              << ", time_to_align_s: " << *t_aligned_s_ - run_.t0_s << "}\n";
+        else
+            f << "alignment: {aligned: false}\n";
     }
 
     runtime::Input<msg::Truth> truth_{*this, topics::kTruth};
@@ -225,6 +242,8 @@ private:
     runtime::Input<msg::AttitudeEstimate> att_{*this, topics::kAttitude};
     runtime::Input<msg::PositionEstimate> pos_{*this, topics::kPosition};
     std::unique_ptr<runtime::Input<msg::GnssSample>> gnss_;
+    std::unique_ptr<runtime::Input<msg::NavAlignment>> align_;
+    std::optional<double> t_aligned_s_;
 
     runtime::RunInfo run_;
     metrics::RunMetrics metrics_;

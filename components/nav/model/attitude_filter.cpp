@@ -219,6 +219,25 @@ void AttitudeFilter::step_error_state(bool imu_good, bool mag_good, const att::M
     eskf::inject(x_, pe_, dx);
 }
 
+double AttitudeFilter::fuse_yaw(double yaw_rad, double yaw_var_rad2) {
+    const double r = math::wrap_pi(yaw_rad - math::euler_from_quat(estimate_q()).yaw_rad);
+    const filters::Vec<1> innov = filters::Vec<1>::Constant(r);
+    const filters::Vec<1> var = filters::Vec<1>::Constant(yaw_var_rad2);
+    if (tun_.formulation == AttitudeFormulation::kErrorState) {
+        filters::Mat<1, eskf::kN> h = filters::Mat<1, eskf::kN>::Zero();
+        h(0, 2) = 1.0;
+        eskf::ErrVec dx = eskf::ErrVec::Zero();
+        const double nis = filters::joseph_update_diag<eskf::kN, 1>(dx, pe_, innov, h, var).nis;
+        eskf::inject(x_, pe_, dx);
+        return nis;
+    }
+    filters::Mat<1, att::kN> h = filters::Mat<1, att::kN>::Zero();
+    h.block<1, 4>(0, att::kQ) = filters::att_error_jacobian(x_.segment<4>(att::kQ)).row(2);
+    const double nis = filters::joseph_update_diag<att::kN, 1>(x_, p_, innov, h, var).nis;
+    normalise_quaternion();
+    return nis;
+}
+
 Eigen::Matrix3d AttitudeFilter::attitude_covariance_n() const {
     if (tun_.formulation == AttitudeFormulation::kErrorState) return pe_.topLeftCorner<3, 3>();
     const filters::Mat34 g = filters::att_error_jacobian(x_.segment<4>(att::kQ));

@@ -82,6 +82,11 @@ public:
     AttitudeEstimate step(std::uint64_t k, double t_s, const ImuSample& imu, const MagSample& mag,
                           const PositionEstimate& pos_prev);
 
+    // A heading observation (e.g. yaw_gsf.hpp's GNSS yaw) with variance yaw_var_rad2: a scalar Joseph update of the
+    // current state on the NED-side yaw angle (additive: the D row of att_error_jacobian on q; error-state: dtheta_D),
+    // then the usual normalisation / injection. Returns the NIS. Used only by runs that configure it.
+    double fuse_yaw(double yaw_rad, double yaw_var_rad2);
+
     // Samples rejected by the input checks since configure().
     struct Rejections {
         std::uint64_t imu{0};
