@@ -94,7 +94,7 @@ void read_command(StartedMember& m, const Config& c) {
             if (std::find(own.begin(), own.end(), k) != own.end())
                 env->fail(k, "set by gdnav for every member (docs/external.md); not in env:");
             if (!env->node()[k].IsScalar()) env->fail(k, "expected a string value");
-            m.env.emplace_back(k, env->node()[k].Scalar());
+            m.env.emplace_back(k, env->get_string(k));
         }
     }
 }
