@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "commands_scenario.hpp"
 #include "framework/lockstep.hpp"
+#include "framework/run_members.hpp"
 #include "launch/batch/batch_report.hpp"
 #include "montecarlo.hpp"
 
@@ -22,6 +23,7 @@ BatchSpec batch_spec(const McArgs& a, const CliContext& ctx) {
     b.scenario = a.scenario;
     b.file = s.file;
     b.doc = s.doc;
+    add_member_options(b.doc, a.members);
     b.seed = a.seed;
     b.seed_given = a.seed_given;
     b.steps = a.steps;
@@ -84,6 +86,9 @@ CLI::App* add_montecarlo_command(CLI::App& app, CliContext& ctx, CommandRunner& 
     sub->add_option("--set", a->o.sets, "override a key: path.to.key=value (YAML value; ~ removes)");
     sub->add_option("--grade", a->o.grades, "sensor grade for every group (NAME) or one group (GROUP=NAME)");
     sub->add_option("--variant", a->o.variants, "navigation variant NAME (nav_att, nav_pos) or COMPONENT=NAME");
+    sub->add_option("--member", a->members,
+                    "a member gdnav starts in every run: NAME=COMMAND or NAME=python:FILE.py:CLASS (repeatable; "
+                    "docs/montecarlo.md)");
     sub->add_flag("--no-report", a->no_report, "do not aggregate at the end");
     sub->add_flag("--no-figures", a->no_figures, "aggregate tables only");
     run = [a, sub, &ctx]() {

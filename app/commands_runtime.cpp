@@ -7,6 +7,7 @@
 
 #include "commands_plan.hpp"
 #include "commands_scenario.hpp"
+#include "framework/run_members.hpp"
 #include "launch/bench/bench.hpp"
 #include "launch/run_rewrites.hpp"
 #include "dds/clock/clock.hpp"
@@ -34,6 +35,7 @@ struct RunArgs {
     std::uint64_t steps{0};
     int domain{-1};
     std::vector<std::string> external;
+    std::vector<std::string> members;
     double join_timeout_s{0.0};
     std::string faults_file;
     std::string security;
@@ -60,6 +62,9 @@ void add_run_options(CLI::App* sub, RunArgs* a) {
     sub->add_option("--external", a->external,
                     "members run outside gdnav (NAME[,NAME...]): not started, waited for (docs/protocol.md)")
         ->delimiter(',');
+    sub->add_option("--member", a->members,
+                    "a member gdnav starts: NAME=COMMAND or NAME=python:FILE.py:CLASS (run.members; repeatable; "
+                    "docs/external.md)");
     sub->add_option("--join-timeout", a->join_timeout_s, "seconds to wait for --external members (run.join_timeout_s)")
         ->check(CLI::Range(1.0, 86400.0));
     sub->add_option("--faults", a->faults_file,
@@ -86,7 +91,7 @@ void add_run_options(CLI::App* sub, RunArgs* a) {
 // gdnav run --plan: the clock host's slice of the plan; the plan names what the other options would.
 int run_with_plan(const RunArgs& a, const CLI::App& sub, const CliContext& ctx) {
     for (const char* opt : {"--scenario", "--seed", "--run", "--layout", "--domain", "--replay", "--external",
-                            "--security", "--set", "--grade", "--variant", "--faults", "--realtime"})
+                            "--member", "--security", "--set", "--grade", "--variant", "--faults", "--realtime"})
         if (sub.count(opt))
             throw config::ConfigError(std::string("config error: --plan and ") + opt +
                                       ": the plan names the scenario, seed, domain and layout of each host");
@@ -121,11 +126,17 @@ RunConfig run_config_of(const RunArgs& a, const CLI::App& sub) {
     RunConfig rc = [&] {
         if (replay_base) {
             if (!a.o.empty()) throw config::ConfigError("config error: --set/--grade/--variant need --scenario with --replay");
-            return RunConfig::load(std::filesystem::path(a.rw.replay_dir) / "run.yaml", o);
+            const std::filesystem::path file = std::filesystem::path(a.rw.replay_dir) / "run.yaml";
+            if (a.members.empty()) return RunConfig::load(file, o);
+            YAML::Node doc = YAML::Clone(config::Config::load(file).node());
+            add_member_options(doc, a.members);
+            return RunConfig::parse(document_text(doc), file.string(), o);
         }
-        if (a.o.empty()) return RunConfig::load(resolve_scenario(scenario::scenario_alias(a.scenario)), o);
+        if (a.o.empty() && a.members.empty())
+            return RunConfig::load(resolve_scenario(scenario::scenario_alias(a.scenario)), o);
         // Overrides apply to the scenario document before its generator runs (as in gdnav scenario/montecarlo).
-        const ScenarioDocument s = load_scenario_document(a.scenario, a.o);
+        ScenarioDocument s = load_scenario_document(a.scenario, a.o);
+        add_member_options(s.doc, a.members);
         return RunConfig::parse(document_text(s.doc), s.file.string(), o);
     }();
     return rc;

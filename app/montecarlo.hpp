@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "launch/batch/batch_runner.hpp"
 #include "command.hpp"
@@ -23,6 +24,7 @@ struct McArgs {
     std::string out;
     std::uint64_t steps{0};
     scenario::Overrides o;
+    std::vector<std::string> members;  // --member NAME=SPEC (run.members of every run)
     bool no_report{false};
     bool no_figures{false};
     std::string shard;  // "I/N" (empty: the whole batch)

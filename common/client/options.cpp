@@ -23,6 +23,20 @@ T parse_number(const std::string& flag, const std::string& text, T lo, T hi) {
     return static_cast<T>(v);
 }
 
+// A member started by gdnav (run.members) finds the run's settings in its environment (docs/external.md).
+void apply_environment(Options& o) {
+    auto env = [](const char* name) -> const char* {
+        const char* v = std::getenv(name);
+        return v && *v ? v : nullptr;
+    };
+    if (const char* v = env("GDNAV_MEMBER")) o.name = v;
+    if (const char* v = env("GDNAV_DOMAIN")) o.domain_id = parse_number<int>("environment GDNAV_DOMAIN", v, 0, 232);
+    if (const char* v = env("GDNAV_RUN"))
+        o.run_id = parse_number<std::uint64_t>("environment GDNAV_RUN", v, 0, 1'000'000'000);
+    if (const char* v = env("GDNAV_SECURITY")) o.security = v;
+    if (const char* v = env("GDNAV_DDS_PROFILE")) o.dds_profile = v;
+}
+
 }  // namespace
 
 std::string Options::usage(const std::string& program) {
@@ -35,6 +49,7 @@ std::string Options::usage(const std::string& program) {
 Options Options::from_args(int argc, const char* const* argv, std::string default_name, std::vector<std::string>* extra) {
     Options o;
     o.name = std::move(default_name);
+    apply_environment(o);  // then the flags, which win
     const std::string program = argc > 0 ? argv[0] : "member";
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "framework/lockstep.hpp"
+#include "framework/run_members.hpp"
 #include "framework/scenario_generator.hpp"
 
 #ifndef GDNAV_SOURCE_CONFIG_DIR
@@ -138,6 +139,12 @@ void read_run_section(RunConfig& rc, const Config& run) {
     rc.essential = run.has("essential") ? run.get_strings("essential") : std::vector<std::string>{};
     rc.external = run.has("external") ? run.get_strings("external") : std::vector<std::string>{};
     rc.join_timeout_s = run.get_double("join_timeout_s", 60.0, Range{1.0, 86400.0});
+    for (const auto& m : read_started_members(run)) {
+        if (rc.is_external(m.name))
+            run.fail("members." + m.name, "'" + m.name + "' is in run.external too (an external member is started "
+                                          "by you, a member of run.members by gdnav: give it once)");
+        if (!m.in_process()) rc.external.push_back(m.name);
+    }
     rc.dds_profile = run.get_string("dds_profile", "dds/gdnav_profiles.xml");
     if (rc.dds_profile.is_relative()) rc.dds_profile = config_dir() / rc.dds_profile;
     if (run.has("security")) {

@@ -21,6 +21,7 @@
 #include "dds/security/security.hpp"
 #include "launch/children.hpp"
 #include "launch/domain_lock.hpp"
+#include "launch/member_process.hpp"
 #include "launch/run_outcome.hpp"
 #include "launch/shm_cleanup.hpp"
 
@@ -93,6 +94,7 @@ namespace {
 void check_layout(const RunConfig& rc, const LaunchOptions& opt) {
     if (opt.layout != "direct" && opt.layout != "composed" && opt.layout != "distributed")
         throw config::ConfigError("unknown layout '" + opt.layout + "' (allowed: direct, composed, distributed)");
+    check_started_members(rc, opt.layout);
     if (opt.layout == "direct" && !rc.external.empty())
         throw config::ConfigError("config error: " + rc.origin +
                                   ": key 'run.external': external members need the lockstep clock; use --layout "
@@ -125,6 +127,9 @@ void check_security(const RunConfig& rc, const LaunchOptions& opt) {
             hosted.push_back(m.name);
         }
     if (opt.layout == "composed" && !hosted.empty()) identities.push_back(security::process_identity(hosted));
+    if (opt.start_clock)  // the members gdnav starts join under their own name
+        for (const auto& m : started_members(rc))
+            if (!m.in_process()) identities.push_back(m.name);
     for (const auto& id : identities) security::check_identity(rc.security_dir, id);
     spdlog::info("DDS Security on: {} identities from {} checked (authentication, access control, AES-GCM)",
                  identities.size(), rc.security_dir.string());
@@ -209,14 +214,47 @@ std::vector<Child> start_members(const RunConfig& rc, const LaunchOptions& opt, 
     return children;
 }
 
+// Starts the process members after the others, says which external members gdnav does not start, and writes
+// processes.yaml (a process member's entry with its command and hash).
+void start_process_members(std::vector<Child>& children, const std::vector<MemberProcess>& procs,
+                           const RunConfig& rc) {
+    const std::size_t others = children.size();
+    std::vector<std::string> records;
+    for (const auto& m : procs) {
+        children.push_back({m.name, start_member_process(m, rc.out_dir)});
+        records.push_back(member_process_record(m, children.back().pid));
+        spdlog::info("started member {} (pid {}): {} (in {}, output in logs/{}.log)", m.name, children.back().pid,
+                     join(m.argv, " "), m.cwd.string(), m.name);
+    }
+    std::vector<std::string> outside;
+    const std::vector<StartedMember> given = started_members(rc);
+    for (const auto& e : rc.external)
+        if (!find_started(given, e)) outside.push_back(e);
+    if (!outside.empty())
+        spdlog::info("external member(s) {} are not started by gdnav: start them on DDS domain {} with run id {} "
+                     "(e.g. `--domain {} --run {}`); waiting up to {:.0f} s",
+                     join(outside, ", "), rc.domain_id, rc.info.run_index, rc.domain_id, rc.info.run_index,
+                     rc.join_timeout_s);
+    std::ofstream f(fs::path(rc.out_dir) / "processes.yaml");
+    for (std::size_t i = 0; i < others; ++i) f << children[i].name << ": " << children[i].pid << "\n";
+    for (const auto& r : records) f << r << "\n";
+}
+
 struct Outcome {
     int clock_code{-1};
-    std::vector<std::string> failures;  // "name (how it ended)"
+    std::vector<std::string> failures;         // "name (how it ended)"
+    std::vector<std::string> member_failures;  // of them, the process members gdnav started
     bool interrupted{false};
+    bool stopped{false};  // the launcher stopped the run after a member_failure
 };
 
+bool is_process_member(const std::vector<MemberProcess>& procs, const std::string& name) {
+    return std::any_of(procs.begin(), procs.end(), [&name](const MemberProcess& m) { return m.name == name; });
+}
+
 // Waits for the children: Ctrl-C stops them all; once the clock is gone the members get member_timeout_s to end.
-Outcome supervise(std::vector<Child>& children, const RunConfig& rc) {
+// A process member (procs) that fails stops the run.
+Outcome supervise(std::vector<Child>& children, const RunConfig& rc, const std::vector<MemberProcess>& procs) {
     Outcome out;
     auto on_exit = [&](Child& c) {
         const bool ok = WIFEXITED(c.status) && WEXITSTATUS(c.status) == 0;
@@ -232,12 +270,22 @@ Outcome supervise(std::vector<Child>& children, const RunConfig& rc) {
         }
         out.failures.push_back(c.name + " (" + describe_status(c.status) + ")");
         spdlog::warn("process '{}' (pid {}) ended: {}", c.name, c.pid, describe_status(c.status));
+        if (is_process_member(procs, c.name) && !out.stopped && !out.interrupted)
+            out.member_failures.push_back(out.failures.back());
     };
     while (any_running(children)) {
         reap(children, on_exit);
         if (stop_requested() && !out.interrupted) {
             out.interrupted = true;
             spdlog::warn("interrupted: stopping all processes of the run");
+            signal_all(children, SIGTERM);
+            if (!wait_all(children, 3.0, on_exit)) signal_all(children, SIGKILL);
+        }
+        // A member gdnav started that failed fails the run (its outputs are missing): no need to wait for the
+        // clock's timeouts.
+        if (!out.member_failures.empty() && !out.stopped && !out.interrupted) {
+            out.stopped = true;
+            spdlog::warn("stopping the run: member {} failed", out.member_failures.front());
             signal_all(children, SIGTERM);
             if (!wait_all(children, 3.0, on_exit)) signal_all(children, SIGKILL);
         }
@@ -262,7 +310,8 @@ void stop_services(std::vector<Child>& services) {
 }
 
 // The run's exit code from how its processes ended, with the closing log line.
-int exit_code(const Outcome& out, const RunConfig& rc, const LaunchOptions& opt) {
+int exit_code(const Outcome& out, const RunConfig& rc, const LaunchOptions& opt,
+              const std::vector<MemberProcess>& procs) {
     if (out.interrupted) {
         spdlog::error("run interrupted");
         return kExitInterrupted;
@@ -276,6 +325,15 @@ int exit_code(const Outcome& out, const RunConfig& rc, const LaunchOptions& opt)
         return kExitOk;
     }
     const ClockSummary summary = read_clock_summary(fs::path(rc.out_dir) / "clock_summary.yaml");
+    std::vector<std::string> members = out.member_failures;  // members gdnav started that failed or were lost
+    for (const auto& d : summary.dead)
+        if (is_process_member(procs, d.name))
+            members.push_back(d.name + " (declared dead at step " + std::to_string(d.step) + ": " + d.reason + ")");
+    if (!members.empty()) {
+        spdlog::error("run failed: member {}, started by gdnav; its output is in {}/logs/", join(members, ", "),
+                      rc.out_dir);
+        return 1;
+    }
     if (out.clock_code != kExitOk) {
         const int code = out.clock_code > 0 ? out.clock_code : 1;
         spdlog::error("{}", failed_run_line(code, summary, out.failures));
@@ -306,6 +364,9 @@ int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& 
         return run_direct(rc, reg, true);
     }
     check_security(rc, opt);
+    // Process members are started where the clock is (a plan's other hosts start none).
+    const std::vector<MemberProcess> procs =
+        opt.start_clock ? resolve_member_processes(rc) : std::vector<MemberProcess>{};
 
     const std::time_t started = std::time(nullptr) - 1;
     install_stop_signal_handlers();
@@ -317,20 +378,12 @@ int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& 
         return code;
     }
     for (Child& c : start_members(rc, opt, run_yaml)) children.push_back(c);
-    if (!rc.external.empty())
-        spdlog::info("external member(s) {} are not started by gdnav: start them on DDS domain {} with run id {} "
-                     "(e.g. `--domain {} --run {}`); waiting up to {:.0f} s",
-                     join(rc.external, ", "), rc.domain_id, rc.info.run_index, rc.domain_id, rc.info.run_index,
-                     rc.join_timeout_s);
-    {
-        std::ofstream f(fs::path(rc.out_dir) / "processes.yaml");
-        for (const auto& c : children) f << c.name << ": " << c.pid << "\n";
-    }
-    const Outcome out = supervise(children, rc);
+    start_process_members(children, procs, rc);
+    const Outcome out = supervise(children, rc, procs);
     stop_services(services);
     const auto removed = clean_fastdds_shm(started);
     if (!removed.empty()) spdlog::info("removed {} Fast DDS shared-memory files left by the run", removed.size());
-    return exit_code(out, rc, opt);
+    return exit_code(out, rc, opt, procs);
 }
 
 }  // namespace gdnav::runtime

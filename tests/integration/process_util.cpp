@@ -114,7 +114,9 @@ std::map<std::string, pid_t> read_processes(const fs::path& out) {
     std::map<std::string, pid_t> m;
     if (!fs::exists(out / "processes.yaml")) return m;
     const YAML::Node n = YAML::LoadFile((out / "processes.yaml").string());
-    for (const auto& kv : n) m[kv.first.as<std::string>()] = kv.second.as<pid_t>();
+    // A member gdnav started (run.members) is a map with its pid, command and hash.
+    for (const auto& kv : n)
+        m[kv.first.as<std::string>()] = kv.second.IsMap() ? kv.second["pid"].as<pid_t>() : kv.second.as<pid_t>();
     return m;
 }
 

@@ -30,6 +30,22 @@ def load_runs(batch):
     return runs
 
 
+def load_failures(batch):
+    """Failed runs of BATCH/runs/run_* (their failure.yaml, written by gdnav montecarlo): dicts {run, exit_code,
+    cause, log_tail, member_logs}, sorted by run index."""
+    failures = []
+    root = os.path.join(batch, "runs")
+    for name in sorted(os.listdir(root)) if os.path.isdir(root) else []:
+        f = os.path.join(root, name, "failure.yaml")
+        if os.path.isfile(f):
+            with open(f) as fh:
+                rec = yaml.safe_load(fh) or {}
+            if "run" in rec:
+                failures.append(rec)
+    failures.sort(key=lambda r: int(r["run"]))
+    return failures
+
+
 def signal(rec, key, stat):
     """One per-run statistic of an error signal from a metrics.yaml record (NaN when undefined)."""
     v = rec["signals"][key][stat]

@@ -3,7 +3,8 @@
 
 usage: /usr/bin/python3 tools/report/report.py BATCH_DIR [--out DIR]
 
-Reads BATCH_DIR/runs/run_*/metrics.yaml (complete runs only) and their run.h5 (/error table, docs/montecarlo.md),
+Reads BATCH_DIR/runs/run_*/metrics.yaml (complete runs only; failed runs, with a failure.yaml, are named on stderr)
+and their run.h5 (/error table, docs/montecarlo.md),
 and writes PNG figures to DIR (default BATCH_DIR/report):
 
   attitude_nse.png        yaw, pitch, bank errors and |dr|: across-run mean +- std versus time, best and worst run
@@ -29,7 +30,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from batch_runs import DEG, Streamed, batch_label, final_distance, load_runs, read_table, signal  # noqa: E402
+from batch_runs import (DEG, Streamed, batch_label, final_distance, load_failures, load_runs, read_table,  # noqa: E402
+                        signal)
 
 # (column of /error, label, scale to plot units, unit)
 ATTITUDE = [("yaw_rad", r"$\hat\psi-\psi$", DEG, "deg"), ("pitch_rad", r"$\hat\theta-\theta$", DEG, "deg"),
@@ -152,6 +154,8 @@ def main():
     out = a.out or os.path.join(a.batch, "report")
     os.makedirs(out, exist_ok=True)
     runs = load_runs(a.batch)
+    for f in load_failures(a.batch):  # left out of the figures; gdnav report lists them with their last log lines
+        print(f"report.py: run {f['run']} failed (exit code {f.get('exit_code')}): {f.get('cause', '')}", file=sys.stderr)
     if not runs:
         print(f"report.py: no complete run in {a.batch}/runs", file=sys.stderr)
         return 1

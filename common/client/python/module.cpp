@@ -30,7 +30,9 @@ The run must have been started with `gdnav run ... --external NAME --domain D`. 
 free_running=False, dds_profile="", startup_timeout_s=120.0, log_level="info", security=""); Member.from_args(argv,
 default_name) reads --name, --domain, --run, --free-running, --dds-profile, --security, --startup-timeout, --log-level
 and leaves arguments
-starting with --x- in Member.extra_args.
+starting with --x- in Member.extra_args; without a flag it takes the name, domain, run id, security directory and DDS
+profile from the environment of a member started by gdnav (GDNAV_MEMBER, GDNAV_DOMAIN, GDNAV_RUN, GDNAV_SECURITY,
+GDNAV_DDS_PROFILE; gdnav run --member).
 
 Ports (declare them before run(); topics "gdnav/<Type>" of idl/gdnav.idl, nested fields as "stamp.t_s"):
   port[field], port[field] = value, port.as_dict(), port.update(dict), port.fields(), port.available(),

@@ -10,6 +10,7 @@
 #include <spdlog/spdlog.h>
 
 #include "launch/batch/batch_dir.hpp"
+#include "launch/batch/batch_failures.hpp"
 #include "launch/batch/batch_merge.hpp"
 #include "config/config.hpp"
 #include "metrics/report_tables.hpp"
@@ -108,6 +109,22 @@ std::string stopped_estimates_note(const std::vector<metrics::RunRecord>& runs, 
            "to t_end: runs " + list + "\n";
 }
 
+// The runs of a block that failed (their failure.yaml, batch_failures.hpp): a line of the preamble, a warning, and
+// their last log lines appended to `md`.
+std::string failed_runs_note(const std::vector<fs::path>& group, const std::string& where, std::string& md) {
+    std::vector<RunFailure> failed;
+    for (const auto& d : group)
+        for (auto& f : read_run_failures(d)) failed.push_back(std::move(f));
+    if (failed.empty()) return "";
+    std::string list;
+    for (const auto& f : failed)
+        list += (list.empty() ? "" : "; ") + std::to_string(f.run) + " (exit code " + std::to_string(f.exit_code) +
+                ": " + f.cause + ")";
+    spdlog::warn("report: {}: {} failed run(s): {}", where, failed.size(), list);
+    md += failures_markdown(failed, where);
+    return "  - failed runs (last log lines at the end): " + list + "\n";
+}
+
 }  // namespace
 
 int write_batch_report(const std::vector<fs::path>& dirs, const ReportOptions& o, std::vector<std::size_t>* counts) {
@@ -117,6 +134,7 @@ int write_batch_report(const std::vector<fs::path>& dirs, const ReportOptions& o
     fs::create_directories(out);
     std::vector<metrics::LabelledBatch> batches;
     std::string preamble = "# Aggregated navigation system error (NSE)\n\n";
+    std::string failures_md;  // the failed runs' last log lines, after the tables
     for (const auto& group : groups) {
         metrics::LabelledBatch b;
         b.label = batch_label(group.front());
@@ -133,6 +151,7 @@ int write_batch_report(const std::vector<fs::path>& dirs, const ReportOptions& o
                          index_ranges(merged.missing));
         }
         preamble += '\n';
+        preamble += failed_runs_note(group, where, failures_md);
         preamble += stopped_estimates_note(b.runs, where);
         if (!merged.duplicates.empty())
             spdlog::warn("report: {}: run(s) {} found in more than one directory (identical metrics, counted once)",
@@ -143,7 +162,7 @@ int write_batch_report(const std::vector<fs::path>& dirs, const ReportOptions& o
     preamble += "\nAggregated metrics: mean, population std and max (largest |value|, sign kept; for per-run maxima "
                 "mean and std of |max|) across runs of each per-run metric (t in [0, t_end]). Final: value at t_end. "
                 "Distance: true ground distance since t_GNSS; % = 100 · error / distance per run, then aggregated.\n";
-    write_text(out / "tables.md", metrics::paper_tables_markdown(batches, preamble));
+    write_text(out / "tables.md", metrics::paper_tables_markdown(batches, preamble) + failures_md);
     if (batches.size() == 1) {
         write_text(out / "aggregate.yaml", metrics::to_yaml(batches.front().aggregate));
         write_text(out / "runs.csv", metrics::runs_csv(batches.front().runs));

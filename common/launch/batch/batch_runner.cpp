@@ -21,6 +21,8 @@
 #include "dds/process/process_signals.hpp"
 #include "framework/lockstep.hpp"
 #include "framework/run_config.hpp"
+#include "launch/batch/batch_failures.hpp"
+#include "launch/member_process.hpp"
 #include "metrics/run_record.hpp"
 
 namespace gdnav::app {
@@ -38,12 +40,6 @@ struct Worker {
     fs::path dir;
 };
 
-struct Failure {
-    std::uint64_t run;
-    int code;
-    std::string last_line;
-};
-
 std::string read_tail(const fs::path& p, std::size_t bytes = 4096) {
     std::ifstream f(p, std::ios::binary);
     if (!f) return {};
@@ -54,14 +50,6 @@ std::string read_tail(const fs::path& p, std::size_t bytes = 4096) {
     std::string s(n, '\0');
     f.read(s.data(), static_cast<std::streamsize>(n));
     return s;
-}
-
-std::string last_line(const fs::path& log) {
-    std::istringstream in(read_tail(log));
-    std::string line, last;
-    while (std::getline(in, line))
-        if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
-    return last;
 }
 
 // Fraction of a running run done, from the last "step k/N" progress line of its log (0 when unknown).
@@ -195,6 +183,12 @@ PreparedBatch prepare_batch(const BatchSpec& spec, const ComponentRegistry& reg,
     ro.run_index = spec.first;
     const RunConfig rc0 = RunConfig::parse(text, spec.file.string(), ro);
     (void)rc0.build(reg);
+    check_started_members(rc0, spec.layout);
+    {  // every member's command is found (placeholders of a run in the current directory)
+        RunConfig probe = rc0;
+        probe.out_dir = ".";
+        (void)resolve_member_processes(probe);
+    }
     PreparedBatch p;
     p.first_domain = first_domain(spec);
     p.seed = rc0.info.seed;
@@ -254,7 +248,9 @@ public:
             spdlog::error("montecarlo: {} run(s) failed:", failures_.size());
             for (const auto& f : failures_)
                 spdlog::error("  run {} ({}): exit code {}: {}", f.run, (p_.dir / "runs" / run_dir_name(f.run)).string(),
-                              f.code, f.last_line);
+                              f.exit_code, f.cause);
+            spdlog::error("montecarlo: their last log lines are in {}; run the same command again to rerun them",
+                          (p_.dir / "failures.yaml").string());
         }
         if (interrupted_) {
             spdlog::warn(
@@ -318,7 +314,7 @@ private:
             if (ok) {
                 ++done_now_;
             } else if (!interrupted_) {
-                failures_.push_back({it->run, code == 0 ? 1 : code, last_line(it->dir / "log.txt")});
+                failures_.push_back(record_run_failure(it->dir, it->run, code == 0 ? 1 : code));
             }
             workers_.erase(it);
             print_progress(false);
@@ -353,7 +349,7 @@ private:
     const std::vector<std::uint64_t> todo_;
     const std::size_t skipped_;
     std::vector<Worker> workers_;
-    std::vector<Failure> failures_;
+    std::vector<RunFailure> failures_;
     fs::path exe_;
     bool tty_{false};
     std::size_t next_{0}, done_now_{0};
@@ -377,6 +373,7 @@ int run_batch_shard(const BatchSpec& spec, const ComponentRegistry& reg, const S
                      p.first_domain + static_cast<int>(spec.jobs) - 1);
     ShardRun r(spec, p, std::move(todo), skipped);
     r.run();
+    write_failures_summary(p.dir);
     return r.finish(which);
 }
 

@@ -52,6 +52,9 @@ struct Options {
 
     // Reads --name NAME, --domain D, --run I, --free-running, --dds-profile FILE, --startup-timeout S,
     // --log-level L (and --help). Unknown or malformed arguments throw std::invalid_argument with a one-line message.
+    // Without a flag, a setting comes from the environment gdnav gives the members it starts (run.members):
+    // GDNAV_MEMBER (name), GDNAV_DOMAIN, GDNAV_RUN, GDNAV_SECURITY, GDNAV_DDS_PROFILE; else from default_name and
+    // the defaults above.
     // `extra` receives arguments that start with "--x-" (left for the member's own options) when not null.
     static Options from_args(int argc, const char* const* argv, std::string default_name,
                              std::vector<std::string>* extra = nullptr);

@@ -1,0 +1,139 @@
+#include "framework/run_members.hpp"
+
+#include <algorithm>
+
+#include "framework/lockstep.hpp"
+#include "framework/run_config.hpp"
+
+namespace gdnav::runtime {
+
+using config::Config;
+using config::ConfigError;
+
+std::vector<std::string> split_command_line(const std::string& text, const std::string& what) {
+    std::vector<std::string> words;
+    std::string word;
+    bool in_word = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == ' ' || c == '\t' || c == '\n') {
+            if (in_word) words.push_back(word);
+            word.clear();
+            in_word = false;
+            continue;
+        }
+        in_word = true;
+        if (c == '\'') {
+            const std::size_t end = text.find('\'', i + 1);
+            if (end == std::string::npos) throw ConfigError("config error: " + what + ": unclosed ' in the command");
+            word += text.substr(i + 1, end - i - 1);
+            i = end;
+        } else if (c == '"') {
+            std::size_t j = i + 1;
+            for (; j < text.size() && text[j] != '"'; ++j) {
+                const bool escape = text[j] == '\\' && j + 1 < text.size() &&
+                                    std::string("\"\\$`").find(text[j + 1]) != std::string::npos;
+                if (escape) ++j;
+                word += text[j];
+            }
+            if (j >= text.size()) throw ConfigError("config error: " + what + ": unclosed \" in the command");
+            i = j;
+        } else if (c == '\\') {
+            if (i + 1 >= text.size()) throw ConfigError("config error: " + what + ": the command ends with a \\");
+            word += text[++i];
+        } else {
+            word += c;
+        }
+    }
+    if (in_word) words.push_back(word);
+    return words;
+}
+
+std::pair<std::string, YAML::Node> member_option_node(const std::string& option) {
+    const std::string what = "--member " + option;
+    const std::size_t eq = option.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw ConfigError("config error: " + what + ": expected NAME=COMMAND or NAME=python:FILE.py:CLASS");
+    const std::string name = option.substr(0, eq);
+    const std::string spec = option.substr(eq + 1);
+    YAML::Node node(YAML::NodeType::Map);
+    if (spec.rfind("python:", 0) == 0) {
+        const std::size_t colon = spec.rfind(':');
+        const std::string file = spec.substr(7, colon > 7 ? colon - 7 : 0);
+        const std::string cls = colon > 7 ? spec.substr(colon + 1) : "";
+        if (file.empty() || cls.empty())
+            throw ConfigError("config error: " + what + ": expected python:FILE.py:CLASS");
+        node["python"]["file"] = file;
+        node["python"]["class"] = cls;
+        return {name, node};
+    }
+    const std::vector<std::string> argv = split_command_line(spec, what);
+    if (argv.empty()) throw ConfigError("config error: " + what + ": the command is empty");
+    node["command"] = YAML::Node(YAML::NodeType::Sequence);
+    for (const auto& a : argv) node["command"].push_back(a);
+    return {name, node};
+}
+
+void add_member_options(YAML::Node& root, const std::vector<std::string>& options) {
+    for (const auto& option : options) {
+        auto [name, node] = member_option_node(option);
+        root["run"]["members"][name] = node;
+    }
+}
+
+namespace {
+
+// One process member: its argv, working directory and extra environment.
+void read_command(StartedMember& m, const Config& c) {
+    m.command = c.get_strings("command");
+    if (m.command.empty() || m.command.front().empty()) c.fail("command", "the command is empty");
+    m.cwd = c.get_string("cwd", "");
+    if (const auto env = c.optional_child("env")) {
+        for (const auto& k : env->keys()) {
+            const auto& own = member_env_names();
+            if (std::find(own.begin(), own.end(), k) != own.end())
+                env->fail(k, "set by gdnav for every member (docs/external.md); not in env:");
+            if (!env->node()[k].IsScalar()) env->fail(k, "expected a string value");
+            m.env.emplace_back(k, env->get_string(k));
+        }
+    }
+}
+
+}  // namespace
+
+std::vector<StartedMember> read_started_members(const Config& run) {
+    std::vector<StartedMember> out;
+    const auto members = run.optional_child("members");
+    if (!members) return out;
+    for (const auto& name : members->keys()) {
+        if (name.empty() || name.size() > 63 || name.find_first_of(", \t") != std::string::npos)
+            members->fail(name, "'" + name + "' is not a member name (1-63 characters, no commas or spaces)");
+        if (name == kClockName) members->fail(name, "'clock' is the lockstep clock and cannot be a member");
+        const Config c = members->child(name);
+        StartedMember m;
+        m.name = name;
+        if (c.has("command") == c.has("python")) c.fail("", "give either command or python");
+        if (c.has("command")) {
+            read_command(m, c);
+        } else {
+            const Config py = c.child("python");
+            m.python_file = py.get_string("file");
+            m.python_class = py.get_string("class");
+        }
+        out.push_back(std::move(m));
+    }
+    return out;
+}
+
+std::vector<StartedMember> started_members(const RunConfig& rc) {
+    const Config top = Config::parse(rc.to_yaml(), rc.origin);
+    return read_started_members(top.child("run"));
+}
+
+const StartedMember* find_started(const std::vector<StartedMember>& members, const std::string& name) {
+    for (const auto& m : members)
+        if (m.name == name) return &m;
+    return nullptr;
+}
+
+}  // namespace gdnav::runtime
