@@ -16,7 +16,8 @@ review page: BATCH/report/review/run_NNNN.html when `gdnav report` made it, else
 the across-run mean +- sigma of the errors over time for every batch (compare_page.py).
 
 Batches pair only when they flew the same missions: the same scenario generator (or, without one, scenario file),
-the same seed, run indices in common and, run by run, the same drawn scenario (SHA-256 of drawn_scenario.yaml).
+the same seed and number of steps, run indices in common and, run by run, the same drawn scenario (SHA-256 of
+drawn_scenario.yaml).
 Otherwise, and for bad input (not a batch, no complete run, a wrong number of labels), one line on stderr and exit
 code 2. Batches recorded before gdnav wrote drawn_scenario.yaml are paired by scenario, seed and run indices, with one
 warning line. A metric without a value in a run (a run that ended before the GNSS loss) is "n/a".
@@ -108,9 +109,10 @@ def pairing_problem(base, cand):
     if not common:
         return (f"no run index in common (runs {ranges(base.runs)} and {ranges(cand.runs)})"), []
     for i in common:
-        sb, sc = base.runs[i].get("seed"), cand.runs[i].get("seed")
-        if sb != sc:
-            return f"different seeds ({sb} and {sc}, run {i})", []
+        for key, what in (("seed", "seeds"), ("steps", "run lengths (steps)")):
+            vb, vc = base.runs[i].get(key), cand.runs[i].get(key)
+            if vb != vc:
+                return f"different {what} ({vb} and {vc}, run {i})", []
     unchecked = []
     for i in common:
         db, dc = base.digests.get(i), cand.digests.get(i)
@@ -176,7 +178,8 @@ def markdown(batches, common, pairs):
     for kind in ("attitude", "altitude", "velocity", "horizontal"):
         out += [group_table(kind, blocks), ""]
     for cand, runs in pairs:
-        out += [f"## {cand.label} against {base.label}: paired over {len(runs)} runs (runs {ranges(runs)})", "",
+        n = f"{len(runs)} run" + ("s" if len(runs) != 1 else "")
+        out += [f"## {cand.label} against {base.label}: paired over {n} (runs {ranges(runs)})", "",
                 f"Difference = {cand.label} − {base.label}, run by run (negative: {cand.label} better); s.e. = "
                 "sample std / √n; runs better: runs with a smaller error; Wilcoxon signed-rank test, two-sided. "
                 "Signed errors (altitude, velocity) are compared by magnitude.", "", paired_table(base, cand, runs),

@@ -13,7 +13,7 @@ import yaml
 import compare
 
 
-def metrics(index, seed, rot_mean_rad, hor_final_m, short=False):
+def metrics(index, seed, rot_mean_rad, hor_final_m, short=False, steps=6000):
     """A minimal complete metrics.yaml record; SHORT: a run that ended before the GNSS loss (no finals' %)."""
     nan = float("nan")
     sig = {k: {"mean": 0.01, "std": 0.005, "max": -0.02, "final": 1.5} for k in
@@ -21,22 +21,22 @@ def metrics(index, seed, rot_mean_rad, hor_final_m, short=False):
     sig["rot_rad"] = {"mean": rot_mean_rad, "std": 0.001, "max": 0.05, "final": 0.01}
     sig["hor_m"] = {"mean": 1.0, "std": 1.0, "max": 2.0, "final": hor_final_m}
     pct = nan if short else 100.0 * hor_final_m / 1000.0
-    return {"complete": True, "seed": seed, "run_index": index, "distance_since_gnss_m": 0.0 if short else 1000.0,
+    return {"complete": True, "seed": seed, "run_index": index, "steps": steps, "distance_since_gnss_m": 0.0 if short else 1000.0,
             "final_percent": {"hor": pct, "cross": pct, "along": pct}, "signals": sig}
 
 
-def make_batch(root, name, seed, values, drawn=None, short=False):
+def make_batch(root, name, seed, values, drawn=None, short=False, steps=6000, first=0):
     """A batch folder: batch.yaml and runs/run_NNNN/metrics.yaml per (rot mean, hor final) of VALUES; DRAWN: the text
     of each run's drawn_scenario.yaml (None: not recorded, as batches of an older gdnav)."""
     path = os.path.join(root, name)
     os.makedirs(os.path.join(path, "runs"), exist_ok=True)
     with open(os.path.join(path, "batch.yaml"), "w") as fh:
         yaml.safe_dump({"scenario": "2", "generator": "paper_scenario2", "seed": seed}, fh)
-    for i, (rot, hor) in enumerate(values):
+    for i, (rot, hor) in enumerate(values, start=first):
         d = os.path.join(path, "runs", f"run_{i:04d}")
         os.makedirs(d)
         with open(os.path.join(d, "metrics.yaml"), "w") as fh:
-            yaml.safe_dump(metrics(i, seed, rot, hor, short), fh)
+            yaml.safe_dump(metrics(i, seed, rot, hor, short, steps), fh)
         if drawn is not None:
             with open(os.path.join(d, "drawn_scenario.yaml"), "w") as fh:
                 fh.write(drawn(i))
@@ -118,12 +118,16 @@ class Command(unittest.TestCase):
         self.assertEqual(row, "| Δx_hor final [%] | n/a | n/a | n/a | n/a | n/a |")
         self.assertIn("## mine against paper", out)
 
-    def test_refuses_different_seeds_drawn_scenarios_and_runs(self):
+    def test_refuses_different_seeds_drawn_scenarios_lengths_and_runs(self):
         base = make_batch(self.root, "base", 4, [(0.002, 10.0)] * 2, self.same)
-        for name, seed, drawn, words in [("seed5", 5, self.same, "different seeds (4 and 5, run 0)"),
-                                         ("other", 4, lambda i: f"mission: other {i}\n", "run 0 drew different")]:
-            code, out, err = run(base, make_batch(self.root, name, seed, [(0.002, 10.0)] * 2, drawn))
-            self.assertEqual(code, 2)
+        for name, seed, drawn, steps, first, words in [
+                ("seed5", 5, self.same, 6000, 0, "different seeds (4 and 5, run 0)"),
+                ("other", 4, lambda i: f"mission: other {i}\n", 6000, 0, "run 0 drew different scenarios"),
+                ("long", 4, self.same, 9000, 0, "different run lengths (steps) (6000 and 9000, run 0)"),
+                ("later", 4, self.same, 6000, 5, "no run index in common (runs 0-1 and 5-6)")]:
+            cand = make_batch(self.root, name, seed, [(0.002, 10.0)] * 2, drawn, steps=steps, first=first)
+            code, out, err = run(base, cand)
+            self.assertEqual(code, 2, name)
             self.assertEqual(out, "")
             self.assertEqual(len(err.splitlines()), 1, err)
             self.assertIn("did not fly the same missions: " + words, err)
