@@ -122,27 +122,30 @@ def bands(out, batches, runs):
     """bands.png: every batch's mean +- sigma over RUNS of the errors versus time."""
     cols = [r[0] for r in BAND_ROWS]
     fig, axes = plt.subplots(len(BAND_ROWS), 1, figsize=(9.5, 2.0 * len(BAND_ROWS) + 0.8), dpi=DPI, sharex=True)
-    t_gnss = None
+    t_gnss, t_max = None, -math.inf
     for k, b in enumerate(batches):
         stats = Streamed(cols)
         for i in runs:
             t, err, tg = read_table(os.path.join(b.dirs[i], "run.h5"), "error", cols)
             stats.add(t, err)
-            t_gnss = tg
+            t_gnss, t_max = tg, max(t_max, float(t[-1]) if len(t) else t_max)
         color = BASE_COLOR if k == 0 else COLORS[(k - 1) % len(COLORS)]
         for ax, (col, label, scale, unit) in zip(axes, BAND_ROWS):
             mean, std = stats.mean_std(col)
             ax.fill_between(stats.t, (mean - std) * scale, (mean + std) * scale, color=color, alpha=0.2, lw=0)
-            ax.plot(stats.t, mean * scale, color=color, lw=1.1, label=f"{b.label}: mean ± σ")
+            # The base thick under the candidates, so that it shows where they coincide.
+            ax.plot(stats.t, mean * scale, color=color, lw=2.4 if k == 0 else 1.0, zorder=2 + k,
+                    label=f"{b.label}: mean ± σ")
             ax.set_ylabel(f"{label} [{unit}]")
     for ax in axes:
         ax.grid(True, alpha=0.3)
-        if t_gnss is not None and np.isfinite(t_gnss):
+        if t_gnss is not None and np.isfinite(t_gnss) and t_gnss <= t_max:
             ax.axvline(t_gnss, color="k", ls=":", lw=0.8)
     axes[0].legend(fontsize=8, loc="upper left")
-    axes[0].set_title(f"Errors versus time: across-run mean ± σ over the same {len(runs)} runs of every batch",
-                      fontsize=10)
-    axes[-1].set_xlabel("t [s]   (dotted: GNSS lost)")
+    n = f"{len(runs)} run" + ("s" if len(runs) != 1 else "")
+    axes[0].set_title(f"Errors versus time: across-run mean ± σ over the same {n} of every batch", fontsize=10)
+    axes[-1].set_xlabel("t [s]   (dotted: GNSS lost)" if t_gnss is not None and t_gnss <= t_max
+                        else "t [s]   (GNSS not lost before the end)")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "bands.png"), dpi=DPI)
     plt.close(fig)

@@ -21,6 +21,7 @@
 #include "dds/process/process_signals.hpp"
 #include "framework/lockstep.hpp"
 #include "framework/run_config.hpp"
+#include "framework/scenario_generator.hpp"
 #include "metrics/run_record.hpp"
 
 namespace gdnav::app {
@@ -162,7 +163,22 @@ struct PreparedBatch {
     std::uint64_t seed{0};
     double sim_per_run_s{0.0};
     std::vector<std::uint64_t> mine;  // this shard's run indices
+    YAML::Node doc;                   // DIR/scenario.yaml's document
 };
+
+// RUN_DIR/drawn_scenario.yaml: what the scenario's generator drew for this run (framework/scenario_generator.hpp),
+// so that `gdnav compare` can tell by its SHA-256 whether two batches flew the same missions. Nothing when the
+// scenario has no generator. Written beside the run's outputs: no recorded topic or metric changes.
+void write_drawn_scenario(const PreparedBatch& p, std::uint64_t run, const fs::path& run_dir) {
+    const YAML::Node drawn = drawn_scenario(p.doc, p.seed, run, (p.dir / "scenario.yaml").string());
+    if (!drawn || drawn.IsNull()) return;
+    YAML::Emitter em;
+    em.SetDoublePrecision(17);
+    em << drawn;
+    write_file_atomic(run_dir / "drawn_scenario.yaml",
+                      "# Scenario drawn for this run by its generator (components reduced to their type); written by "
+                      "gdnav montecarlo\n" + std::string(em.c_str()) + "\n");
+}
 
 PreparedBatch prepare_batch(const BatchSpec& spec, const ComponentRegistry& reg, const Shard& shard) {
     const std::string text = batch_scenario_text(spec);
@@ -175,6 +191,7 @@ PreparedBatch prepare_batch(const BatchSpec& spec, const ComponentRegistry& reg,
     p.seed = rc0.info.seed;
     p.sim_per_run_s = static_cast<double>(rc0.info.steps) * rc0.info.dt_s;
     p.dir = fs::absolute(spec.out);
+    p.doc = YAML::Load(text);
     prepare_batch_dir(p.dir, text);
     write_batch_record(spec, p.dir, p.seed, shard);
     p.mine = shard_runs(spec.first, spec.runs, shard);
@@ -259,6 +276,7 @@ private:
             std::error_code ec;
             fs::remove_all(w.dir, ec);  // stale files of an interrupted attempt
             fs::create_directories(w.dir);
+            write_drawn_scenario(p_, w.run, w.dir);
             // No --domain: each run takes a DDS domain no other run of this host uses (launch/domain_lock.hpp).
             const std::vector<std::string> args{"run",         "--scenario", (p_.dir / "scenario.yaml").string(),
                                                 "--seed",      std::to_string(p_.seed),
