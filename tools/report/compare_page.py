@@ -19,6 +19,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
 
 from batch_runs import DEG, Streamed, read_table  # noqa: E402
@@ -97,6 +98,8 @@ def scatter(out, key, label, unit, base, pairs, value, links):
         ax.set_xlim(lo, hi)
         ax.set_ylim(lo, hi)
         ax.set_aspect("equal")
+        ax.xaxis.set_major_locator(matplotlib.ticker.MaxNLocator(5))
+        ax.yaxis.set_major_locator(matplotlib.ticker.MaxNLocator(6))
         ax.legend(fontsize=7, loc="upper left", title="candidate", title_fontsize=7)
     ax.set_xlabel(f"{base.label} [{unit}]")
     ax.set_ylabel(f"candidate [{unit}]")
