@@ -28,6 +28,7 @@ int cli_main(int argc, char** argv, const runtime::ComponentRegistry& reg, const
     static constexpr CommandFactory kCommands[] = {
         add_run_command, add_component_command, add_clock_command, add_validate_command,
         add_list_command, add_bench_command, add_scenario_command, add_montecarlo_command, add_report_command,
+        add_compare_command,
         add_import_log_command, add_export_log_command, add_fault_command, add_pki_command,
         add_host_command,
     };

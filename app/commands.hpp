@@ -13,6 +13,7 @@ CLI::App* add_bench_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
 CLI::App* add_scenario_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
 CLI::App* add_montecarlo_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
 CLI::App* add_report_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
+CLI::App* add_compare_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
 CLI::App* add_import_log_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
 CLI::App* add_export_log_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
 CLI::App* add_fault_command(CLI::App& app, CliContext& ctx, CommandRunner& run);

@@ -26,4 +26,10 @@ void register_scenario_generator(const std::string& name, ScenarioGenerator g);
 const ScenarioGenerator* find_scenario_generator(const std::string& name);
 std::vector<std::string> scenario_generator_names();
 
+// What the document's generator draws for run (seed, run_index), apart from any component setting: the generator
+// applied to the document's `generator` section and its components reduced to their `type`, so that two runs fly the
+// same mission exactly when their drawn scenarios are equal, whatever filter variant, sensor grade or member they
+// run. A Null node when the document names no generator (nothing is drawn). Throws as the generator does.
+YAML::Node drawn_scenario(const YAML::Node& doc, std::uint64_t seed, std::uint64_t run_index, const std::string& origin);
+
 }  // namespace gdnav::runtime

@@ -84,15 +84,18 @@ def read_runs_csv(path):
 
 
 def batch_label(batch):
-    """'scenario #1' / 'scenario #2' for the paper generators (batch.yaml), else the folder name."""
-    label = os.path.basename(os.path.normpath(batch))
+    """The batch folder's name, with 'scenario #1' / 'scenario #2' for the paper generators (batch.yaml) or the
+    scenario's name when it differs from the folder's (as gdnav report's tables)."""
+    folder = os.path.basename(os.path.abspath(batch))
+    what = ""
     try:
         with open(os.path.join(batch, "batch.yaml")) as f:
-            gen = (yaml.safe_load(f) or {}).get("generator", "")
-        label = {"paper_scenario1": "scenario #1", "paper_scenario2": "scenario #2"}.get(gen, label)
+            rec = yaml.safe_load(f) or {}
+        what = {"paper_scenario1": "scenario #1", "paper_scenario2": "scenario #2"}.get(rec.get("generator"),
+                                                                                         str(rec.get("scenario", "")))
     except OSError:
         pass
-    return label
+    return folder if not what or what == folder else f"{folder} ({what})"
 
 
 def read_table(path, name, columns):

@@ -7,6 +7,7 @@
 #   (OUT_DIR/sS_NAME); JOBS parallel runs (default 2); GDNAV the binary (default build/bin/gdnav).
 # Batches are resumable: run it again with a larger RUNS and only the missing runs fly.
 # Then: /usr/bin/python3 tools/report/results_tables.py OUT_DIR > docs/results/comparison.md
+# (one configuration against the baseline, with Wilcoxon p-values: gdnav compare OUT_DIR/sS_base OUT_DIR/sS_NAME)
 set -euo pipefail
 [ $# -ge 3 ] || { sed -n 2,10p "$0"; exit 2; }
 S=$1 RUNS=$2 OUT=$3 JOBS=${4:-2} G=${5:-build/bin/gdnav}

@@ -22,18 +22,20 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Label of a batch in the tables: "#1" / "#2" for the paper scenarios, else the scenario name.
+// Label of a batch in the tables: its folder's name, with "#1" / "#2" for the paper scenarios (the paper's names of
+// its two scenarios) or the scenario's name when it differs from the folder's, so two batches of one scenario differ.
 std::string batch_label(const fs::path& dir) {
-    std::string label = dir.filename().string();
+    fs::path norm = fs::absolute(dir).lexically_normal();
+    if (norm.filename().empty()) norm = norm.parent_path();  // "out/mc2/"
+    const std::string folder = norm.filename().string();
+    std::string what;
     try {
         const config::Config b = config::Config::load(dir / "batch.yaml");
         const std::string gen = b.get_string("generator", "");
-        if (gen == "paper_scenario1") return "#1";
-        if (gen == "paper_scenario2") return "#2";
-        label = b.get_string("scenario", label);
+        what = gen == "paper_scenario1" ? "#1" : gen == "paper_scenario2" ? "#2" : b.get_string("scenario", "");
     } catch (const std::exception&) {
     }
-    return label;
+    return what.empty() || what == folder ? folder : folder + " (" + what + ")";
 }
 
 // report.py reads one batch folder: for a block of several directories (shards), a folder of links to their runs.
@@ -57,37 +59,6 @@ void write_text(const fs::path& p, const std::string& text) {
     std::ofstream f(p, std::ios::trunc);
     f << text;
     if (!f) throw std::runtime_error("cannot write " + p.string());
-}
-
-// Runs a Python tool of tools/report/ (report.py: PNG figures; review.py: HTML flight review pages) with Debian's
-// /usr/bin/python3 ($GDNAV_PYTHON); $GDNAV_REPORT_SCRIPT names report.py elsewhere, the other tools beside it.
-int run_report_tool(const std::string& name, std::vector<std::string> args) {
-    const char* py_env = std::getenv("GDNAV_PYTHON");
-    const char* script_env = std::getenv("GDNAV_REPORT_SCRIPT");
-    const std::string py = py_env && *py_env ? py_env : "/usr/bin/python3";
-    const fs::path report = script_env && *script_env ? fs::path(script_env)
-                                                      : runtime::config_dir().parent_path() / "tools/report/report.py";
-    const fs::path script = name == "report.py" ? report : report.parent_path() / name;
-    if (!fs::exists(script)) {
-        spdlog::error("figures: {} not found (set GDNAV_REPORT_SCRIPT)", script.string());
-        return 1;
-    }
-    args.insert(args.begin(), {py, script.string()});
-    std::vector<char*> argv;
-    for (auto& s : args) argv.push_back(s.data());
-    argv.push_back(nullptr);
-    const pid_t pid = fork();
-    if (pid < 0) return 1;
-    if (pid == 0) {
-        execv(py.c_str(), argv.data());
-        _exit(127);
-    }
-    int st = 0;
-    while (waitpid(pid, &st, 0) < 0) {
-    }
-    const int code = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
-    if (code != 0) spdlog::error("figures: {} {} failed with code {}", py, script.string(), code);
-    return code;
 }
 
 // Runs whose estimator stopped before the end (killed, lost) are counted, but their finals are at their last
@@ -126,6 +97,35 @@ std::string failed_runs_note(const std::vector<fs::path>& group, const std::stri
 }
 
 }  // namespace
+
+int run_report_tool(const std::string& name, std::vector<std::string> args, bool log_failure) {
+    const char* py_env = std::getenv("GDNAV_PYTHON");
+    const char* script_env = std::getenv("GDNAV_REPORT_SCRIPT");
+    const std::string py = py_env && *py_env ? py_env : "/usr/bin/python3";
+    const fs::path report = script_env && *script_env ? fs::path(script_env)
+                                                      : runtime::config_dir().parent_path() / "tools/report/report.py";
+    const fs::path script = name == "report.py" ? report : report.parent_path() / name;
+    if (!fs::exists(script)) {
+        spdlog::error("{}: {} not found (set GDNAV_REPORT_SCRIPT)", name, script.string());
+        return 1;
+    }
+    args.insert(args.begin(), {py, script.string()});
+    std::vector<char*> argv;
+    for (auto& s : args) argv.push_back(s.data());
+    argv.push_back(nullptr);
+    const pid_t pid = fork();
+    if (pid < 0) return 1;
+    if (pid == 0) {
+        execv(py.c_str(), argv.data());
+        _exit(127);
+    }
+    int st = 0;
+    while (waitpid(pid, &st, 0) < 0) {
+    }
+    const int code = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
+    if (code != 0 && log_failure) spdlog::error("{}: {} {} failed with code {}", name, py, script.string(), code);
+    return code;
+}
 
 int write_batch_report(const std::vector<fs::path>& dirs, const ReportOptions& o, std::vector<std::size_t>* counts) {
     if (dirs.empty()) throw config::ConfigError("report: no batch directory given");

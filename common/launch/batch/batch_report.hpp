@@ -20,4 +20,9 @@ struct ReportOptions {
 int write_batch_report(const std::vector<std::filesystem::path>& batch_dirs, const ReportOptions& o,
                        std::vector<std::size_t>* runs = nullptr);
 
+// Runs a Python tool of tools/report/ (report.py: PNG figures; review.py: HTML flight review pages; compare.py:
+// gdnav compare) with Debian's /usr/bin/python3 ($GDNAV_PYTHON); $GDNAV_REPORT_SCRIPT names report.py elsewhere, the
+// other tools beside it. Returns the tool's exit code (1 when it cannot start), logged when non-zero and log_failure.
+int run_report_tool(const std::string& name, std::vector<std::string> args, bool log_failure = true);
+
 }  // namespace gdnav::app

@@ -23,6 +23,7 @@
 #include "framework/run_config.hpp"
 #include "launch/batch/batch_failures.hpp"
 #include "launch/member_process.hpp"
+#include "framework/scenario_generator.hpp"
 #include "metrics/run_record.hpp"
 
 namespace gdnav::app {
@@ -152,6 +153,7 @@ struct PreparedBatch {
     double sim_per_run_s{0.0};
     std::vector<std::uint64_t> mine;  // this shard's run indices
     int first_domain{-1};             // >= 0: slot k runs on DDS domain first_domain + k
+    YAML::Node doc;                   // DIR/scenario.yaml's document
 };
 
 // The domain of slot 0: --domain, else the document's run.domain_id (a batch's runs cannot share one domain, so a
@@ -176,6 +178,20 @@ int first_domain(const BatchSpec& spec) {
     return d;
 }
 
+// RUN_DIR/drawn_scenario.yaml: what the scenario's generator drew for this run (framework/scenario_generator.hpp),
+// so that `gdnav compare` can tell by its SHA-256 whether two batches flew the same missions. Nothing when the
+// scenario has no generator. Written beside the run's outputs: no recorded topic or metric changes.
+void write_drawn_scenario(const PreparedBatch& p, std::uint64_t run, const fs::path& run_dir) {
+    const YAML::Node drawn = drawn_scenario(p.doc, p.seed, run, (p.dir / "scenario.yaml").string());
+    if (!drawn || drawn.IsNull()) return;
+    YAML::Emitter em;
+    em.SetDoublePrecision(17);
+    em << drawn;
+    write_file_atomic(run_dir / "drawn_scenario.yaml",
+                      "# Scenario drawn for this run by its generator (components reduced to their type); written by "
+                      "gdnav montecarlo\n" + std::string(em.c_str()) + "\n");
+}
+
 PreparedBatch prepare_batch(const BatchSpec& spec, const ComponentRegistry& reg, const Shard& shard) {
     const std::string text = batch_scenario_text(spec);
     // Validate the whole configuration once (run `first`) before starting anything.
@@ -194,6 +210,7 @@ PreparedBatch prepare_batch(const BatchSpec& spec, const ComponentRegistry& reg,
     p.seed = rc0.info.seed;
     p.sim_per_run_s = static_cast<double>(rc0.info.steps) * rc0.info.dt_s;
     p.dir = fs::absolute(spec.out);
+    p.doc = YAML::Load(text);
     prepare_batch_dir(p.dir, text);
     write_batch_record(spec, p.dir, p.seed, shard);
     p.mine = shard_runs(spec.first, spec.runs, shard);
@@ -281,6 +298,7 @@ private:
             std::error_code ec;
             fs::remove_all(w.dir, ec);  // stale files of an interrupted attempt
             fs::create_directories(w.dir);
+            write_drawn_scenario(p_, w.run, w.dir);
             std::vector<std::string> args{"run",         "--scenario", (p_.dir / "scenario.yaml").string(),
                                           "--seed",      std::to_string(p_.seed),
                                           "--run",       std::to_string(w.run),

@@ -28,12 +28,14 @@ std::vector<std::string> with(std::vector<std::string> cmd, const std::vector<st
     return cmd;
 }
 
-// tables.md without the lines that name the directories ("- #2: 5 complete runs in DIR, DIR").
+// tables.md without the lines that name the directories ("- FOLDER (#2): 5 complete runs in DIR, DIR") and with the
+// label of its block (FOLDER (#2), FOLDER the name of the block's first folder) replaced by "#2".
 std::string tables_without_dirs(const fs::path& report) {
     std::istringstream in(read_file(report / "tables.md"));
+    static const std::regex label(R"([^ |]+ \(#2\))");
     std::string line, out;
     while (std::getline(in, line))
-        if (line.rfind("- ", 0) != 0) out += line + "\n";
+        if (line.rfind("- ", 0) != 0) out += std::regex_replace(line, label, "#2") + "\n";
     return out;
 }
 

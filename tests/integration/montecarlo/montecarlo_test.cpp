@@ -33,7 +33,7 @@ void expect_well_formed_tables(const std::string& md, const std::string& label) 
     for (const char* title : {"Aggregated body attitude NSE", "Aggregated final vertical position",
                               "Aggregated final ground speed NSE", "Aggregated final horizontal position NSE"})
         EXPECT_NE(md.find(title), std::string::npos) << title << "\n" << md;
-    EXPECT_NE(md.find("| " + label + " | mean |"), std::string::npos) << md;
+    EXPECT_NE(md.find(" (" + label + ") | mean |"), std::string::npos) << md;  // "| FOLDER (#2) | mean |"
     EXPECT_EQ(md.find("n/a"), std::string::npos) << md;
     EXPECT_GE(expect_consistent_markdown_tables(md), 6);
 }
