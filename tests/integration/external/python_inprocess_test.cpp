@@ -77,7 +77,7 @@ TEST(PythonInProcess, RecordsTheSameTopicsAsTheExternalMember) {
 TEST(PythonInProcess, MonteCarloBatchInDirectLayout) {
     const fs::path out = temp_dir("pyinproc-mc");
     const Result r = run({GDNAV_GDNAV_EXE, "montecarlo", "--scenario", "2", "--runs", "3", "--jobs", "2", "--layout",
-                          "direct", "--steps", "2000", "--set", member_set(kExample, "ComplementaryAttitude"), "--out",
+                          "direct", "--steps", "2000", "--no-report", "--set", member_set(kExample, "ComplementaryAttitude"), "--out",
                           out.string()},
                          300.0);
     ASSERT_EQ(r.exit_code, 0) << r.output;
