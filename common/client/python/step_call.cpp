@@ -47,7 +47,8 @@ std::string StepCost::text() const {
                        cpu_mean_us(), cpu_max_us, mean_us(), max_us);
 }
 
-StepCall::StepCall(StepCost& cost) : cost_(cost), t0_(std::chrono::steady_clock::now()), cpu0_us_(thread_cpu_us()) {
+StepCall::StepCall(StepCost& cost)
+    : cost_(cost), t0_(std::chrono::steady_clock::now()), cpu0_us_(thread_cpu_us()) {
     // Read before taking the GIL: whether Python already knows this thread (the thread that started the
     // interpreter or called run() does; so does one whose state is kept).
     thread_local bool kept = false;

@@ -20,7 +20,8 @@ struct StepCost {
     [[nodiscard]] double mean_us() const { return steps ? total_us / static_cast<double>(steps) : 0.0; }
     [[nodiscard]] double cpu_mean_us() const { return steps ? cpu_total_us / static_cast<double>(steps) : 0.0; }
     [[nodiscard]] pybind11::dict as_dict() const;
-    [[nodiscard]] std::string text() const;  // "N steps: CPU mean .. us, max .. us; wall mean .. us, max .. us per step"  // {"steps", "mean_us", "max_us", "cpu_mean_us", "cpu_max_us"}
+    // "N steps: CPU mean .. us, max .. us; wall mean .. us, max .. us per step"
+    [[nodiscard]] std::string text() const;  // {"steps", "mean_us", "max_us", "cpu_mean_us", "cpu_max_us"}
 };
 
 // Holds the GIL for its lifetime (one acquisition) and adds its wall and CPU time to `cost` when it ends.

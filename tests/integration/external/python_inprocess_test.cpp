@@ -36,11 +36,10 @@ std::string last_line(const std::string& log) {
     return s.substr(s.rfind('\n') + 1);
 }
 
-// Lines at error level ("error:" as gdnav logs them).
+// Lines logged at error level ("] error: " as gdnav's log pattern writes the level).
 int error_lines(const std::string& log) {
     int n = 0;
-    for (std::size_t p = log.find("error"); p != std::string::npos; p = log.find("error", p + 1))
-        if (log.compare(p, 7, "error: ") == 0 || log.compare(p, 9, "error\x1b[m: ") == 0) ++n;
+    for (std::size_t p = log.find("] error: "); p != std::string::npos; p = log.find("] error: ", p + 1)) ++n;
     return n;
 }
 
@@ -77,8 +76,8 @@ TEST(PythonInProcess, RecordsTheSameTopicsAsTheExternalMember) {
 TEST(PythonInProcess, MonteCarloBatchInDirectLayout) {
     const fs::path out = temp_dir("pyinproc-mc");
     const Result r = run({GDNAV_GDNAV_EXE, "montecarlo", "--scenario", "2", "--runs", "3", "--jobs", "2", "--layout",
-                          "direct", "--steps", "2000", "--no-report", "--set", member_set(kExample, "ComplementaryAttitude"), "--out",
-                          out.string()},
+                          "direct", "--steps", "2000", "--no-report", "--set",
+                          member_set(kExample, "ComplementaryAttitude"), "--out", out.string()},
                          300.0);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     for (const char* run : {"run_0000", "run_0001", "run_0002"}) {
@@ -112,7 +111,8 @@ TEST(PythonInProcess, BadMembersAreOneLineNamingTheFile) {
                                          "pass\n"),
          "C", "are not those of the member it replaces", 2},
         {write("unknowntopic.py", ok_head + "class C:\n    def __init__(self, m):\n        self.i = "
-                                            "m.input('gdnav/NoSuchTopic')\n    def step(self, k, t_s):\n        pass\n"),
+                                            "m.input('gdnav/NoSuchTopic')\n    def step(self, k, t_s):\n"
+                                            "        pass\n"),
          "C", "unknowntopic.py:4: ValueError: unknown topic 'gdnav/NoSuchTopic'", 2},
         {write("nostep.py", ok_head + "class C:\n    def __init__(self, m):\n        self.o = "
                                       "m.output('gdnav/AttitudeEstimate')\n"),
@@ -129,6 +129,8 @@ TEST(PythonInProcess, BadMembersAreOneLineNamingTheFile) {
         const std::string last = last_line(r.output);
         EXPECT_NE(last.find(c.expect), std::string::npos) << c.file << "\n" << r.output;
         EXPECT_NE(last.find(c.file), std::string::npos) << c.file << "\n" << r.output;
-        if (c.code == 2) EXPECT_EQ(error_lines(r.output), 1) << c.file << "\n" << r.output;
+        if (c.code == 2) {
+            EXPECT_EQ(error_lines(r.output), 1) << c.file << "\n" << r.output;
+        }
     }
 }
