@@ -11,6 +11,9 @@
 #include "replay.hpp"
 #include "sensor_components.hpp"
 #include "truth_as_estimate.hpp"
+#ifdef GDNAV_PYTHON_EMBED
+#include "client/embed/python_member.hpp"
+#endif
 
 namespace gdnav::app {
 
@@ -26,6 +29,9 @@ void register_all_components(runtime::ComponentRegistry& reg) {
     diagnostics::register_diagnostics(reg);
     nav_recorder::register_nav_recorder(reg);
     scenario::register_paper_scenarios();
+#ifdef GDNAV_PYTHON_EMBED
+    pyembed::register_python_member(reg);  // run.members: {NAME: {python: ...}} (docs/python.md)
+#endif
 }
 
 }  // namespace gdnav::app

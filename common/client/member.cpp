@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include "dds/host/dds_host.hpp"
+#include "framework/any_output.hpp"
 #include "framework/lockstep.hpp"
 #include "dds/process/process_signals.hpp"
 #include "framework/run_config.hpp"
@@ -32,31 +33,6 @@ public:
     std::vector<std::string> status;
 };
 
-namespace {
-
-// An output of a type chosen at run time (by topic name).
-class AnyOutput final : public runtime::OutputBase {
-public:
-    AnyOutput(runtime::Component& owner, std::string topic, const runtime::MessageOps& ops)
-        : OutputBase(owner, std::move(topic), ops), value_(ops.create()) {}
-    ~AnyOutput() override { ops().destroy(value_); }
-    AnyOutput(const AnyOutput&) = delete;
-    AnyOutput& operator=(const AnyOutput&) = delete;
-    [[nodiscard]] void* data() override { return value_; }
-
-private:
-    void* value_;
-};
-
-const runtime::MessageOps& topic_ops(const std::string& topic) {
-    if (const runtime::MessageOps* ops = runtime::find_topic(topic)) return *ops;
-    std::string known;
-    for (const auto& t : runtime::known_topics()) known += (known.empty() ? "" : ", ") + t;
-    throw std::invalid_argument("unknown topic '" + topic + "' (known: " + known + ")");
-}
-
-}  // namespace
-
 Member::Member(Options opt)
     : opt_(std::move(opt)), comp_(std::make_unique<Adapter>(opt_.name)), adapter_(comp_.get()) {
     if (opt_.name.empty() || opt_.name.size() > 63 || opt_.name.find_first_of(", \t") != std::string::npos)
@@ -75,14 +51,14 @@ runtime::Component& Member::component() {
 }
 
 const runtime::InputBase& Member::input_any(const std::string& topic, Lag lag) {
-    auto p = std::make_unique<runtime::InputBase>(component(), topic, lag, topic_ops(topic));
+    auto p = std::make_unique<runtime::InputBase>(component(), topic, lag, runtime::require_topic(topic));
     const runtime::InputBase& ref = *p;
     inputs_.push_back(std::move(p));
     return ref;
 }
 
 runtime::OutputBase& Member::output_any(const std::string& topic) {
-    auto p = std::make_unique<AnyOutput>(component(), topic, topic_ops(topic));
+    auto p = std::make_unique<runtime::AnyOutput>(component(), topic, runtime::require_topic(topic));
     runtime::OutputBase& ref = *p;
     outputs_.push_back(std::move(p));
     return ref;

@@ -104,12 +104,19 @@ void DirectExecutor::step(std::uint64_t k) {
             }
             b.input->bind(data);
         }
-        if (profile_ns_.empty()) {
-            c->step(ctx);
-        } else {
-            const auto t0 = std::chrono::steady_clock::now();
-            c->step(ctx);
-            profile_ns_[i] += std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
+        try {
+            if (profile_ns_.empty()) {
+                c->step(ctx);
+            } else {
+                const auto t0 = std::chrono::steady_clock::now();
+                c->step(ctx);
+                profile_ns_[i] += std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
+            }
+        } catch (const std::exception& e) {
+            // Named as a DDS host names it (dds/host/host_step.cpp): the member, the step, the first line.
+            std::string what = e.what();
+            throw std::runtime_error(fmt::format("member '{}' failed at step {} (t = {:.2f} s): {}", c->name(), k,
+                                                 ctx.t_s, what.substr(0, what.find('\n'))));
         }
         for (OutputBase* o : c->outputs()) o->ops().set_stamp(o->data(), run_.run_index, k, ctx.t_s);
         for (auto& msg : c->pending_status()) spdlog::info("[{}] step {} t={:.2f} s: {}", c->name(), k, ctx.t_s, msg);

@@ -204,7 +204,8 @@ void read_faults(RunConfig& rc, const Config& top, const std::string& origin, co
 
 RunConfig RunConfig::parse(const std::string& text, const std::string& origin, const RunOverrides& o) {
     // Parse once to apply overrides on the tree, then validate the resulting document.
-    const YAML::Node root = expand_generator(apply_overrides(text, origin, o), origin);
+    YAML::Node root = expand_generator(apply_overrides(text, origin, o), origin);
+    apply_inprocess_members(root, origin);
     RunConfig rc;
     rc.origin = origin;
     rc.root_ = root;

@@ -5,11 +5,15 @@
 //   run:
 //     members:
 //       nav_att: {command: [python3, my_filter.py, --x-gain, "0.02"], cwd: work, env: {OMP_NUM_THREADS: "1"}}
-//       nav_pos: {python: {file: my_filter.py, class: PosFilter}}   # in-process Python (not built in this version)
+//       nav_pos: {python: {file: my_filter.py, class: PosFilter}}   # a Python class, in-process (docs/python.md)
 //
 // A `command` member is a process the launcher starts and supervises like a built-in member; for the clock it is
 // an external member (it joins through the lockstep protocol), so a name may replace a configured component or add
-// a new member, as in `run.external`. The `python` form is kept here unchanged for the in-process Python host.
+// a new member, as in `run.external`.
+// A `python` member is hosted by gdnav itself: RunConfig::parse first rewrites such an entry as the component NAME
+// of type `python_member` ({file: ABSOLUTE PATH, class: C, replaces: T} where T is the type of the configured
+// component NAME it stands in for, if any) and removes it from `run.members`, so the resolved run.yaml that every
+// process of the run reads holds the component itself; only `command` entries remain for the launcher.
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,6 +23,12 @@
 #include "config/config.hpp"
 
 namespace gdnav::runtime {
+
+inline constexpr const char* kPythonMemberType = "python_member";
+
+// Rewrites `root` (a run document, overrides applied): each `python` entry of run.members becomes a component, as
+// above. Throws ConfigError naming the file and key.
+void apply_inprocess_members(YAML::Node& root, const std::string& origin);
 
 struct StartedMember {
     std::string name;

@@ -1,7 +1,9 @@
 #include "framework/topic_types.hpp"
 
 #include <map>
+#include <stdexcept>
 
+#include "framework/any_output.hpp"
 #include "msgs/messages.hpp"
 
 namespace gdnav::idl_text {
@@ -28,6 +30,13 @@ void register_topic(const std::string& topic, const MessageOps& ops, std::string
 const MessageOps* find_topic(const std::string& topic) {
     auto it = table().find(topic);
     return it == table().end() ? nullptr : it->second.ops;
+}
+
+const MessageOps& require_topic(const std::string& topic) {
+    if (const MessageOps* ops = find_topic(topic)) return *ops;
+    std::string known;
+    for (const auto& t : known_topics()) known += (known.empty() ? "" : ", ") + t;
+    throw std::invalid_argument("unknown topic '" + topic + "' (known: " + known + ")");
 }
 
 std::string_view topic_schema_idl(const std::string& topic) {

@@ -83,8 +83,6 @@ fs::path file_run(const fs::path& exe, const std::vector<std::string>& argv, con
 
 void check_started_members(const RunConfig& rc, const std::string& layout) {
     for (const auto& m : started_members(rc)) {
-        if (m.in_process())
-            fail(rc, m.name + ".python", "in-process Python members are not built in this version");
         if (layout == "direct")
             fail(rc, m.name, "a process member needs the lockstep clock; use --layout composed or distributed (the "
                              "direct layout has no transport)");

@@ -4,6 +4,11 @@
     gdnav run --scenario paper2 --seed 1 --layout distributed --external nav_att --domain 7 --out out/py
     PYTHONPATH=build/python /usr/bin/python3 examples/python/complementary_attitude.py --domain 7
 
+or inside the gdnav process (any layout, also direct; docs/python.md, "In-process members"):
+
+    gdnav run --scenario paper2 --seed 1 --layout direct --out out/py \
+        --set 'run.members={nav_att: {python: {file: examples/python/complementary_attitude.py, class: ComplementaryAttitude}}}'
+
 Inputs: ImuSample, MagSample, AirDataEstimate (step k) and PositionEstimate (step k-1, for the Earth rate and the
 transport rate). Output: AttitudeEstimate (q_nb, euler_rad, w_nb_b_rps, gyr_bias_rps, att_sigma_rad; the magnetic
 states of the built-in EKF stay zero).
@@ -136,24 +141,31 @@ class ComplementaryFilter:
         return w_nb_b
 
 
-def main(argv):
-    m = g.Member.from_args(argv, "nav_att")
-    imu = m.input("gdnav/ImuSample")
-    mag = m.input("gdnav/MagSample")
-    air = m.input("gdnav/AirDataEstimate")
-    pos = m.input("gdnav/PositionEstimate", lag=g.Lag.Previous)
-    att = m.output("gdnav/AttitudeEstimate")
-    f = ComplementaryFilter()
-    att["att_sigma_rad"] = np.array([SIGMA_TILT_RAD, SIGMA_TILT_RAD, SIGMA_HEAD_RAD])
+class ComplementaryAttitude:
+    """The member class (docs/python.md, "Member classes"): ports declared in the constructor, step(k, t_s) every
+    step. main() runs it as an external member; gdnav runs it in process with
+    --set 'run.members={nav_att: {python: {file: examples/python/complementary_attitude.py,
+    class: ComplementaryAttitude}}}'."""
 
-    def step(k, t_s):
+    def __init__(self, m):
+        self.m = m
+        self.imu = m.input("gdnav/ImuSample")
+        self.mag = m.input("gdnav/MagSample")
+        self.air = m.input("gdnav/AirDataEstimate")
+        self.pos = m.input("gdnav/PositionEstimate", lag=g.Lag.Previous)
+        self.att = m.output("gdnav/AttitudeEstimate")
+        self.f = ComplementaryFilter()
+        self.att["att_sigma_rad"] = np.array([SIGMA_TILT_RAD, SIGMA_TILT_RAD, SIGMA_HEAD_RAD])
+
+    def step(self, k, t_s):
+        imu, mag, air, pos, att, f = self.imu, self.mag, self.air, self.pos, self.att, self.f
         if not imu.available():
             return                                      # hold the last estimate
         if f.q is None:
             if not mag.available() or not imu["align_q_nb"].any():
                 return                                  # nothing published until the alignment is there
             f.initialise(imu, mag)
-            m.publish_status("initialised from the pre-flight alignment")
+            self.m.publish_status("initialised from the pre-flight alignment")
         if pos.available():
             f.set_navigation_frame_rate(pos["lat_rad"], pos["h_m"], pos["v_n_mps"].tolist())
         a = (air["tas_mps"], air["aoa_rad"], air["aos_rad"], air["tas_dot_mps2"]) if air.available() else None
@@ -166,7 +178,11 @@ def main(argv):
         att["w_nb_b_rps"] = np.array(w_nb_b)
         att["gyr_bias_rps"] = np.array(f.bias)
 
-    m.on_step(step)
+
+def main(argv):
+    m = g.Member.from_args(argv, "nav_att")
+    member = ComplementaryAttitude(m)
+    m.on_step(member.step)
     code = m.run()
     cost = m.step_cost
     print(f"complementary_attitude: exit code {code}; Python step cost over {cost['steps']} steps: CPU mean "

@@ -60,24 +60,10 @@ cost per call (GIL acquisition included) is logged after the run and kept in Mem
 
 PYBIND11_MODULE(gdnav_client, mod) {
     mod.doc() = kDoc;
-    py::enum_<Lag>(mod, "Lag", "input lag: Same = the sample of step k, Previous = of step k-1")
-        .value("Same", Lag::Same)
-        .value("Previous", Lag::Previous);
+    gdnav::pyclient::bind_ports(mod);
 
-    py::class_<Port, std::shared_ptr<Port>>(mod, "Port", "an input or output of a member (see the module docstring)")
-        .def("__getitem__", &Port::get, py::arg("field"))
-        .def("__setitem__", &Port::set, py::arg("field"), py::arg("value"))
-        .def("as_dict", &Port::as_dict, "all fields as {name: value}")
-        .def("update", &Port::update, py::arg("values"), "set the fields of an output from {name: value}")
-        .def("fields", &Port::fields, "[(name, IDL type)]")
-        .def("available", &Port::available, "an input has a sample at this step (outputs: always)")
-        .def("lost", &Port::lost, "the input's producer was declared dead")
-        .def_property_readonly("topic", &Port::topic)
-        .def_property_readonly("is_output", &Port::is_output)
-        .def("__repr__", [](const Port& p) { return std::string(p.is_output() ? "<output " : "<input ") + p.topic() + ">"; });
-
-    py::class_<PyMember>(mod, "Member", "a lockstep member of a gdnav run (see the module docstring)")
-        .def(py::init([](std::string name, int domain, std::uint64_t run, bool free_running, std::string dds_profile,
+    py::class_<PyMember> member(mod, "Member", "a lockstep member of a gdnav run (see the module docstring)");
+    member.def(py::init([](std::string name, int domain, std::uint64_t run, bool free_running, std::string dds_profile,
                          double startup_timeout_s, std::string log_level, std::string security) {
                  Options o;
                  o.name = std::move(name);
@@ -94,26 +80,15 @@ PYBIND11_MODULE(gdnav_client, mod) {
              py::arg("dds_profile") = "", py::arg("startup_timeout_s") = 120.0, py::arg("log_level") = "info",
              py::arg("security") = "")
         .def_static("from_args", &PyMember::from_args, py::arg("argv"), py::arg("default_name"))
-        .def("input", &PyMember::input, py::arg("topic"), py::arg("lag") = Lag::Same, py::keep_alive<0, 1>())
-        .def("output", &PyMember::output, py::arg("topic"), py::keep_alive<0, 1>())
         .def("on_step", &PyMember::on_step, py::arg("fn"))
         .def("on_finish", &PyMember::on_finish, py::arg("fn"))
-        .def("publish_status", &PyMember::publish_status, py::arg("message"))
         .def("run", &PyMember::run)
-        .def_property_readonly("name", [](const PyMember& m) { return m.options().name; })
         .def_property_readonly("domain", [](const PyMember& m) { return m.options().domain_id; })
-        .def_property_readonly("run_id", [](const PyMember& m) { return m.options().run_id; })
         .def_property_readonly("free_running", [](const PyMember& m) { return m.options().free_running; })
-        .def_property_readonly("extra_args", &PyMember::extra_args)
-        .def_property_readonly("dt_s", [](const PyMember& m) { return m.step_info().dt_s; })
-        .def_property_readonly("last", [](const PyMember& m) { return m.step_info().last; })
-        .def_property_readonly("step_cost", [](const PyMember& m) {
-            py::dict d;
-            d["steps"] = m.cost().steps;
-            d["mean_us"] = m.cost().mean_us();
-            d["max_us"] = m.cost().max_us;
-            d["cpu_mean_us"] = m.cost().cpu_mean_us();
-            d["cpu_max_us"] = m.cost().cpu_max_us;
-            return d;
-        });
+        .def_property_readonly("extra_args", &PyMember::extra_args);
+    gdnav::pyclient::bind_member_calls(member);
+    mod.def("run_class", &gdnav::pyclient::run_class, py::arg("cls"), py::arg("argv"), py::arg("default_name"),
+            "run a member class (docs/python.md) as this process's member: m = Member.from_args(argv, "
+            "default_name); obj = cls(m); obj.step(k, t_s) every step, obj.finish(completed) if defined; returns "
+            "m.run()");
 }

@@ -1,11 +1,8 @@
 #include "py_member.hpp"
 
 #include <algorithm>
-#include <chrono>
-#include <ctime>
 #include <csignal>
 #include <stdexcept>
-#include <thread>
 
 #include <spdlog/spdlog.h>
 
@@ -34,21 +31,7 @@ private:
     struct sigaction term_ {};
 };
 
-double thread_cpu_us() {
-    timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return 1e6 * static_cast<double>(ts.tv_sec) + 1e-3 * static_cast<double>(ts.tv_nsec);
-}
-
 }  // namespace
-
-void StepCost::add(double wall_us, double cpu_us) {
-    ++steps;
-    total_us += wall_us;
-    max_us = std::max(max_us, wall_us);
-    cpu_total_us += cpu_us;
-    cpu_max_us = std::max(cpu_max_us, cpu_us);
-}
 
 PyMember::PyMember(client::Options opt) : opt_(std::move(opt)), member_(std::make_unique<client::Member>(opt_)) {}
 
@@ -76,20 +59,9 @@ void PyMember::publish_status(const std::string& message) { member_->publish_sta
 
 void PyMember::step(const client::StepInfo& s) {
     if (error_) return;  // leaving the run: the outputs keep their last values
-    const auto t0 = std::chrono::steady_clock::now();
-    const double cpu0 = thread_cpu_us();
     std::string failure;
     {
-        // The host calls the step from whichever thread received the sample (its own or a Fast DDS listener
-        // thread). Each listener thread keeps its Python thread state for the whole run (deleted by run()): without
-        // the extra reference, pybind11 would create and destroy one per call, which is costly (docs/python.md).
-        py::gil_scoped_acquire gil;
-        thread_local bool kept = false;
-        if (!kept && std::this_thread::get_id() != run_thread_) {
-            gil.inc_ref();
-            kept_states_.push_back(PyThreadState_Get());
-            kept = true;
-        }
+        StepCall call(cost_);  // the GIL, from whichever thread the host calls in (docs/python.md)
         info_ = s;
         state_->in_step = true;
         try {
@@ -102,8 +74,6 @@ void PyMember::step(const client::StepInfo& s) {
         }
         state_->in_step = false;
     }
-    const double cpu_us = thread_cpu_us() - cpu0;
-    cost_.add(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count(), cpu_us);
     // The host leaves the run the regular way: it logs the error's first line, sends it to the clock
     // (STATUS_ERROR: the clock declares this member dead with that reason), finishes and returns exit code 1;
     // run() then re-raises the Python exception.
@@ -125,7 +95,6 @@ int PyMember::run() {
             }
         });
     int code = 0;
-    run_thread_ = std::this_thread::get_id();
     {
         SignalGuard signals;
         py::gil_scoped_release release;
@@ -133,14 +102,8 @@ int PyMember::run() {
     }
     // The host has stopped its listener threads: their Python thread states go (a thread state left behind
     // blocks the interpreter's shutdown).
-    for (PyThreadState* ts : kept_states_) {
-        PyThreadState_Clear(ts);
-        PyThreadState_Delete(ts);
-    }
-    kept_states_.clear();
-    spdlog::info("member '{}': Python step callback, {} steps: CPU mean {:.1f} us, max {:.1f} us; wall mean {:.1f} "
-                 "us, max {:.1f} us per step", opt_.name, cost_.steps, cost_.cpu_mean_us(), cost_.cpu_max_us,
-                 cost_.mean_us(), cost_.max_us);
+    release_kept_thread_states();
+    spdlog::info("member '{}': Python step callback, {}", opt_.name, cost_.text());
     if (error_) {
         py::error_already_set e = std::move(*error_);
         error_.reset();
@@ -148,6 +111,15 @@ int PyMember::run() {
         throw e;
     }
     return code;
+}
+
+int run_class(const py::object& cls, const std::vector<std::string>& argv, const std::string& default_name) {
+    py::object m = py::cast(PyMember::from_args(argv, default_name));
+    const ClassCallbacks cb = class_callbacks(cls(m));
+    auto& member = m.cast<PyMember&>();
+    member.on_step(cb.step);
+    if (!cb.finish.is_none()) member.on_finish(cb.finish.cast<py::function>());
+    return member.run();
 }
 
 }  // namespace gdnav::pyclient

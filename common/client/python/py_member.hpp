@@ -4,26 +4,16 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <pybind11/pybind11.h>
 
 #include "gdnav/client/member.hpp"
+#include "bindings.hpp"
 #include "port.hpp"
+#include "step_call.hpp"
 
 namespace gdnav::pyclient {
-
-// Cost of the Python step callback per call: wall time (what the run waits for, including time the process was
-// preempted) and the calling thread's CPU time (the callback's own work), both with the GIL acquisition.
-struct StepCost {
-    std::uint64_t steps{0};
-    double total_us{0.0}, max_us{0.0};
-    double cpu_total_us{0.0}, cpu_max_us{0.0};
-    void add(double wall_us, double cpu_us);
-    [[nodiscard]] double mean_us() const { return steps ? total_us / static_cast<double>(steps) : 0.0; }
-    [[nodiscard]] double cpu_mean_us() const { return steps ? cpu_total_us / static_cast<double>(steps) : 0.0; }
-};
 
 class PyMember {
 public:
@@ -41,7 +31,9 @@ public:
     [[nodiscard]] const client::Options& options() const { return opt_; }
     [[nodiscard]] const std::vector<std::string>& extra_args() const { return extra_; }
     [[nodiscard]] const StepCost& cost() const { return cost_; }
-    [[nodiscard]] const client::StepInfo& step_info() const { return info_; }
+    [[nodiscard]] const std::string& name() const { return opt_.name; }
+    [[nodiscard]] std::uint64_t run_id() const { return opt_.run_id; }
+    [[nodiscard]] StepView step_view() const { return {info_.dt_s, info_.last}; }
 
 private:
     void step(const client::StepInfo& s);  // GIL not held on entry
@@ -55,10 +47,11 @@ private:
     client::StepInfo info_;
     StepCost cost_;
     bool ran_{false};
-    std::thread::id run_thread_;                  // the thread that called run()
-    std::vector<PyThreadState*> kept_states_;     // Python thread states of the host's listener threads
     std::optional<pybind11::error_already_set> error_;  // the step callback's exception, raised by run()
     std::string error_where_;
 };
+
+// gdnav_client.run_class: a member class as this process's member (docs/python.md, "Member classes").
+int run_class(const pybind11::object& cls, const std::vector<std::string>& argv, const std::string& default_name);
 
 }  // namespace gdnav::pyclient
