@@ -45,7 +45,8 @@ void apply_inprocess_members(YAML::Node& root, const std::string& origin) {
     std::vector<std::string> hosted;
     for (const auto& name : members.keys()) {
         const Config entry = members.child(name);
-        if (!entry.has("python")) continue;  // a member of another kind
+        // A member of another kind, or one giving both kinds (read_started_members refuses it).
+        if (!entry.has("python") || entry.has("command")) continue;
         if (name.empty() || name.size() > 63 || name.find_first_of(", \t") != std::string::npos)
             members.fail(name, "not a member name (1-63 characters, no commas or spaces)");
         if (name == kClockName) members.fail(name, "'clock' is the lockstep clock and cannot be replaced");

@@ -72,19 +72,20 @@ TEST(RunMembers, ACommandMemberIsExternalForTheClockAndKeepsItsSettings) {
     EXPECT_TRUE(again.is_external("extra"));
 }
 
-TEST(RunMembers, FileFormWithCwdEnvAndThePythonFormPassedThrough) {
+TEST(RunMembers, FileFormWithCwdEnvAndThePythonFormBecomesAComponent) {
     const RunConfig rc = RunConfig::parse(
         "run: {seed: 1, steps: 10, members: {nav: {command: [a, b], cwd: w, env: {K: v, N: 3}}, "
         "py: {python: {file: f.py, class: C}}}}\ncomponents: {nav: {type: y}}\n", "t.yaml");
     const auto started = started_members(rc);
-    ASSERT_EQ(started.size(), 2u);
+    ASSERT_EQ(started.size(), 1u);  // the python entry is a component of the run, not a process
     EXPECT_EQ(started[0].cwd, "w");
     EXPECT_EQ(started[0].env.size(), 2u);
     EXPECT_EQ(started[0].env[1], (std::pair<std::string, std::string>{"N", "3"}));
-    EXPECT_TRUE(started[1].in_process());
-    EXPECT_EQ(started[1].python_file, "f.py");
-    EXPECT_EQ(started[1].python_class, "C");
-    EXPECT_FALSE(rc.is_external("py"));  // left to the in-process host
+    EXPECT_FALSE(rc.is_external("py"));  // hosted by gdnav
+    const YAML::Node doc = YAML::Load(rc.to_yaml());
+    EXPECT_EQ(doc["components"]["py"]["type"].as<std::string>(), kPythonMemberType);
+    EXPECT_EQ(doc["components"]["py"]["class"].as<std::string>(), "C");
+    EXPECT_FALSE(doc["run"]["members"]["py"]);
 }
 
 TEST(RunMembers, RefusalsNameTheKey) {
