@@ -20,31 +20,11 @@ using config::Range;
 
 namespace {
 
-YAML::Node flow_map() {
-    YAML::Node n(YAML::NodeType::Map);
-    n.SetStyle(YAML::EmitterStyle::Flow);
-    return n;
-}
-
-YAML::Node channel(const char* mode, const char* key, const YAML::Node& value) {
-    YAML::Node n = flow_map();
-    n["mode"] = mode;
-    n[key] = value;
-    return n;
-}
-
-YAML::Node elapsed(double dt_s) {
-    YAML::Node n = flow_map();
-    n["trigger"] = "elapsed";
-    n["dt_s"] = number(dt_s);
-    return n;
-}
-
 YAML::Node bank_op(double bank_rad, double dt_s) {
     YAML::Node op;
     op["op"] = "hold";
     op["aileron"] = channel("bank", "bank_deg", number(math::rad2deg(bank_rad)));
-    op["until"] = elapsed(dt_s);
+    op["until"] = until_elapsed(dt_s);
     return op;
 }
 
@@ -88,7 +68,7 @@ YAML::Node calibration_operations(const CalibrationPattern& p, double airspeed_m
     lead["elevator"] = channel("pressure_altitude", "pressure_altitude_m", number(pressure_altitude_m));
     lead["aileron"] = channel("bearing", "bearing_deg", degrees(bearing_rad));
     lead["rudder"] = channel("sideslip", "sideslip_deg", number(0.0));
-    lead["until"] = elapsed(p.lead_in_s);
+    lead["until"] = until_elapsed(p.lead_in_s);
     ops.push_back(lead);
     const double w = turn_rate_rps(p, airspeed_mps);
     if (p.kind == CalibrationPattern::Kind::turns) {

@@ -42,19 +42,6 @@ void apply_fixed(const Config& f, int scenario, guidance::Scenario2Draws& m) {
     f.finish();
 }
 
-YAML::Node flow_map() {
-    YAML::Node n(YAML::NodeType::Map);
-    n.SetStyle(YAML::EmitterStyle::Flow);
-    return n;
-}
-
-YAML::Node channel(const char* mode, const char* key, const YAML::Node& value) {
-    YAML::Node n = flow_map();
-    n["mode"] = mode;
-    n[key] = value;
-    return n;
-}
-
 YAML::Node until_time(double t_s) {
     YAML::Node n = flow_map();
     n["trigger"] = "time";
@@ -62,12 +49,6 @@ YAML::Node until_time(double t_s) {
     return n;
 }
 
-YAML::Node until_elapsed(double dt_s) {
-    YAML::Node n = flow_map();
-    n["trigger"] = "elapsed";
-    n["dt_s"] = number(dt_s);
-    return n;
-}
 
 YAML::Node turn_op(double to_rad, const YAML::Node& until) {
     const guidance::ManoeuvreSettings m;

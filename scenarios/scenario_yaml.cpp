@@ -24,6 +24,26 @@ YAML::Node degrees(double rad) {
     return number(std::fabs(d - r) < 1e-9 ? r : d);
 }
 
+YAML::Node flow_map() {
+    YAML::Node n(YAML::NodeType::Map);
+    n.SetStyle(YAML::EmitterStyle::Flow);
+    return n;
+}
+
+YAML::Node channel(const char* mode, const char* key, const YAML::Node& value) {
+    YAML::Node n = flow_map();
+    n["mode"] = mode;
+    n[key] = value;
+    return n;
+}
+
+YAML::Node until_elapsed(double dt_s) {
+    YAML::Node n = flow_map();
+    n["trigger"] = "elapsed";
+    n["dt_s"] = number(dt_s);
+    return n;
+}
+
 void fill_missing(YAML::Node target, const YAML::Node& drawn, const std::string& path, std::vector<std::string>* kept) {
     for (const auto& kv : drawn) {
         const std::string key = kv.first.as<std::string>();

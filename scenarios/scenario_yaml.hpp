@@ -13,6 +13,12 @@ std::string shortest(double v);
 YAML::Node number(double v);
 // An angle in radians as degrees; values within 1e-9 deg of an integer print as that integer (integer draws).
 YAML::Node degrees(double rad);
+// An empty mapping written in flow style ({a: 1, b: 2}): the guidance operations' channels and triggers.
+YAML::Node flow_map();
+// A guidance channel {mode: MODE, KEY: VALUE}.
+YAML::Node channel(const char* mode, const char* key, const YAML::Node& value);
+// A guidance trigger {trigger: elapsed, dt_s: DT}: the operation ends DT seconds after it began.
+YAML::Node until_elapsed(double dt_s);
 
 // Adds to `target` every key of `drawn` it does not have, recursively into mappings both have. Keys the template
 // already sets are kept (the scenario file overrides the draw); their paths are appended to `kept`.
