@@ -16,22 +16,53 @@ namespace gdnav::runtime {
 
 namespace fs = std::filesystem;
 
-pid_t spawn(const fs::path& exe, const std::vector<std::string>& args, int keep_fd) {
-    std::vector<char*> argv;
-    argv.push_back(const_cast<char*>(exe.c_str()));
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+pid_t spawn_argv(const fs::path& exe, const std::vector<std::string>& argv_text, const SpawnOptions& o) {
+    std::vector<char*> argv, envp;
+    for (const auto& a : argv_text) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
+    if (o.env) {
+        for (const auto& e : *o.env) envp.push_back(const_cast<char*>(e.c_str()));
+        envp.push_back(nullptr);
+    }
+    const int log_flags = O_WRONLY | O_CREAT | O_CLOEXEC | (o.log_truncate ? O_TRUNC : O_APPEND);
     const pid_t parent = getpid();
     const pid_t pid = fork();
     if (pid < 0) throw std::runtime_error("fork failed");
     if (pid == 0) {
         prctl(PR_SET_PDEATHSIG, SIGTERM);  // never outlive the launcher
         if (getppid() != parent) _exit(1);
-        if (keep_fd >= 0) fcntl(keep_fd, F_SETFD, 0);
-        execv(exe.c_str(), argv.data());
+        if (!o.log.empty()) {
+            const int fd = open(o.log.c_str(), log_flags, 0644);
+            if (fd >= 0) {
+                dup2(fd, STDOUT_FILENO);
+                dup2(fd, STDERR_FILENO);
+            }
+        }
+        if (!o.cwd.empty() && chdir(o.cwd.c_str()) != 0) _exit(127);
+        if (o.keep_fd >= 0) fcntl(o.keep_fd, F_SETFD, 0);
+        if (o.env)
+            execve(exe.c_str(), argv.data(), envp.data());
+        else
+            execv(exe.c_str(), argv.data());
+        if (!o.log.empty()) {
+            const char msg[] = "gdnav: exec failed\n";
+            (void)!write(STDERR_FILENO, msg, sizeof(msg) - 1);
+        }
         _exit(127);
     }
     return pid;
+}
+
+pid_t spawn(const fs::path& exe, const std::vector<std::string>& args, const SpawnOptions& o) {
+    std::vector<std::string> argv{exe.string()};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return spawn_argv(exe, argv, o);
+}
+
+pid_t spawn(const fs::path& exe, const std::vector<std::string>& args, int keep_fd) {
+    SpawnOptions o;
+    o.keep_fd = keep_fd;
+    return spawn(exe, args, o);
 }
 
 std::string describe_status(int status) {

@@ -16,7 +16,20 @@ struct Child {
     int status{0};
 };
 
-// Starts `exe` with `args`, to end with the launcher; keep_fd: a descriptor it inherits (others are close-on-exec).
+// How a child starts beyond its program and arguments.
+struct SpawnOptions {
+    std::filesystem::path log;        // "" = the launcher's stdout and stderr; else both go to this file
+    bool log_truncate{false};         // the log file is emptied first (else appended to)
+    std::filesystem::path cwd;        // "" = the launcher's working directory
+    const std::vector<std::string>* env{nullptr};  // "K=V" entries: the child's whole environment (nullptr: ours)
+    int keep_fd{-1};                  // a descriptor it inherits (others are close-on-exec)
+};
+
+// Starts `exe` with the argument vector `argv` (argv[0] included), to end with the launcher (PR_SET_PDEATHSIG).
+// Everything is prepared before fork: the child makes only async-signal-safe calls.
+pid_t spawn_argv(const std::filesystem::path& exe, const std::vector<std::string>& argv, const SpawnOptions& o);
+// spawn_argv with argv = {exe, args...}.
+pid_t spawn(const std::filesystem::path& exe, const std::vector<std::string>& args, const SpawnOptions& o);
 pid_t spawn(const std::filesystem::path& exe, const std::vector<std::string>& args, int keep_fd = -1);
 // "exit code N", "killed by signal N".
 std::string describe_status(int status);

@@ -3,7 +3,6 @@
 #include <fcntl.h>
 #include <openssl/evp.h>
 #include <signal.h>
-#include <sys/prctl.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -14,6 +13,8 @@
 #include <stdexcept>
 
 #include <yaml-cpp/yaml.h>
+
+#include "launch/children.hpp"
 
 extern char** environ;
 
@@ -121,7 +122,6 @@ std::vector<MemberProcess> resolve_member_processes(const RunConfig& rc) {
 pid_t start_member_process(const MemberProcess& m, const fs::path& out_dir) {
     fs::create_directories(out_dir / "logs");
     const fs::path log = out_dir / "logs" / (m.name + ".log");
-    // Everything the child needs is built before fork (only async-signal-safe calls after it).
     std::vector<std::string> env_text;
     for (char** e = environ; *e; ++e) {
         const std::string kv = *e;
@@ -131,30 +131,11 @@ pid_t start_member_process(const MemberProcess& m, const fs::path& out_dir) {
     }
     for (const auto& [k, v] : m.env)
         if (!(k == "GDNAV_SECURITY" && v.empty())) env_text.push_back(k + "=" + v);
-    std::vector<char*> envp, argv;
-    for (auto& s : env_text) envp.push_back(s.data());
-    envp.push_back(nullptr);
-    std::vector<std::string> args = m.argv;
-    for (auto& s : args) argv.push_back(s.data());
-    argv.push_back(nullptr);
-    const pid_t parent = getpid();
-    const pid_t pid = fork();
-    if (pid < 0) throw std::runtime_error("fork failed");
-    if (pid == 0) {
-        prctl(PR_SET_PDEATHSIG, SIGTERM);  // never outlive the launcher
-        if (getppid() != parent) _exit(1);
-        const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
-        if (fd >= 0) {
-            dup2(fd, STDOUT_FILENO);
-            dup2(fd, STDERR_FILENO);
-        }
-        if (chdir(m.cwd.c_str()) != 0) _exit(127);
-        execve(m.exe.c_str(), argv.data(), envp.data());
-        const char msg[] = "gdnav: exec of the member's command failed\n";
-        (void)!write(STDERR_FILENO, msg, sizeof(msg) - 1);
-        _exit(127);
-    }
-    return pid;
+    SpawnOptions o;
+    o.log = log;
+    o.cwd = m.cwd;
+    o.env = &env_text;
+    return spawn_argv(m.exe, m.argv, o);
 }
 
 std::string member_process_record(const MemberProcess& m, pid_t pid) {

@@ -2,7 +2,6 @@
 
 #include <fcntl.h>
 #include <signal.h>
-#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -21,6 +20,7 @@
 #include "dds/process/process_signals.hpp"
 #include "framework/lockstep.hpp"
 #include "framework/run_config.hpp"
+#include "launch/children.hpp"
 #include "launch/batch/batch_failures.hpp"
 #include "launch/member_process.hpp"
 #include "framework/scenario_generator.hpp"
@@ -64,27 +64,10 @@ double progress_of(const fs::path& log) {
 }
 
 pid_t spawn_logged(const fs::path& exe, const std::vector<std::string>& args, const fs::path& log) {
-    std::vector<std::string> all{exe.string()};
-    all.insert(all.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (auto& s : all) argv.push_back(s.data());
-    argv.push_back(nullptr);
-    const pid_t parent = getpid();
-    const pid_t pid = fork();
-    if (pid < 0) throw std::runtime_error("fork failed");
-    if (pid == 0) {
-        prctl(PR_SET_PDEATHSIG, SIGTERM);
-        if (getppid() != parent) _exit(1);
-        const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (fd >= 0) {
-            dup2(fd, STDOUT_FILENO);
-            dup2(fd, STDERR_FILENO);
-            close(fd);
-        }
-        execv(exe.c_str(), argv.data());
-        _exit(127);
-    }
-    return pid;
+    SpawnOptions o;
+    o.log = log;
+    o.log_truncate = true;
+    return spawn(exe, args, o);
 }
 
 std::string hms(double s) {
