@@ -18,24 +18,6 @@ B=$(realpath "${1:-build}"); N=${2:-10000}; P=${3:-5}
 SRC=$(cd "$(dirname "$0")/../.." && pwd)
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
-cat > "$T/timed_member.py" <<PY
-# The example's member class with its step timed from inside Python.
-import sys, time
-sys.path.insert(0, "$SRC/examples/python")
-from complementary_attitude import ComplementaryAttitude
-
-class Timed(ComplementaryAttitude):
-    def __init__(self, m):
-        super().__init__(m)
-        self.ns, self.n = 0, 0
-    def step(self, k, t_s):
-        t0 = time.thread_time_ns()
-        super().step(k, t_s)
-        self.ns += time.thread_time_ns() - t0
-        self.n += 1
-    def finish(self, completed):
-        print(f"timed_member: body {self.ns / max(self.n, 1) / 1000:.3f} us per step", flush=True)
-PY
 cat > "$T/null_member.py" <<PY
 class Idle:
     def __init__(self, m):
@@ -44,7 +26,7 @@ class Idle:
         pass
 PY
 SETNULL="run.members={nav_att: {python: {file: $T/null_member.py, class: Idle}}}"
-SET="run.members={nav_att: {python: {file: $T/timed_member.py, class: Timed}}}"
+SET="run.members={nav_att: {python: {file: $SRC/tools/bench/timed_member.py, class: Timed}}}"
 one() {  # $1 = base|py; prints the run's wall time from step 0 [s]
     if [ "$1" = base ]; then "$B/bin/gdnav" run --scenario paper2 --seed 1 --layout direct --steps "$N" --out "$T/$1" > "$T/$1.log" 2>&1
     elif [ "$1" = null ]; then "$B/bin/gdnav" run --scenario paper2 --seed 1 --layout direct --steps "$N" --out "$T/$1" --set "$SETNULL" > "$T/$1.log" 2>&1

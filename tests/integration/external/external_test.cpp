@@ -84,16 +84,17 @@ TEST(External, ExternalControlFromTheInstalledPackageIsBitIdenticalToTheBuiltIn)
     // Reference: the all-built-in run (direct layout; layouts are bit-identical, tests/integration/runs/layouts_test.cpp).
     const auto ref = temp_dir("ext-ref");
     const Result r0 = run({GDNAV_GDNAV_EXE, "run", "--scenario", "paper2", "--seed", "1", "--layout", "direct",
-                           "--record", kRecorded, "--out", ref.string()},
+                           "--steps", "20000", "--record", kRecorded, "--out", ref.string()},
                           120.0);
     ASSERT_EQ(r0.exit_code, 0) << r0.output;
     const auto expected = read_digests(ref);
     ASSERT_EQ(expected.size(), 11u) << r0.output;
 
-    // The full scenario-#2 run in the distributed layout with control outside.
+    // Scenario #2 in the distributed layout with control outside, through the GNSS loss (t = 100 s at step 15 000)
+    // and the first 50 s of the GNSS-denied mission.
     const auto out = temp_dir("ext-control");
     const Pair p = run_with_external({"run", "--scenario", "paper2", "--seed", "1", "--layout", "distributed",
-                                      "--record", kRecorded, "--external", "control"},
+                                      "--steps", "20000", "--record", kRecorded, "--external", "control"},
                                      {example("gdnav-example-control")}, out, 280.0);
     ASSERT_EQ(p.run_code, 0) << p.run_log << "\n--- member:\n" << p.member_log;
     EXPECT_EQ(p.member_code, 0) << p.member_log;
@@ -151,10 +152,10 @@ TEST(External, ExternalControlJoinsASecureRunOnlyWithItsCertificate) {
 }
 
 TEST(External, RealTimeHardwareInTheLoopWithAFreeRunningController) {
-    // 60 s of scenario #2 (t = -50 ... 10 s) paced to wall time; the external controller is free-running: the
+    // 30 s of scenario #2 (t = -50 ... -20 s) paced to wall time; the external controller is free-running: the
     // physics uses the newest command it has (zero-order hold) and records how late each one was.
     const auto out = temp_dir("ext-hil");
-    const std::uint64_t steps = 6001;
+    const std::uint64_t steps = 3001;
     const Pair p = run_with_external({"run", "--scenario", "paper2", "--seed", "1", "--layout", "distributed",
                                       "--steps", std::to_string(steps), "--realtime", "1", "--external", "control"},
                                      {example("gdnav-example-control"), "--free-running"}, out, 150.0);
