@@ -10,6 +10,7 @@
 //   6. Heartbeats that stop for member_timeout_s declare a member dead: the clock re-sends Tick(k) with the member
 //      in dead_mask; consumers stop waiting for its topics. Losing an essential member aborts the run.
 //   7. Members that hear neither Tick nor clock heartbeat for member_timeout_s exit non-zero naming the clock.
+//      A silence is counted only while the listener itself runs (own_stall_s below).
 //   8. After the last step the clock publishes RunControl STOP; everybody finishes and exits 0.
 #include <chrono>
 #include <cstdint>
@@ -32,6 +33,14 @@ inline constexpr int kExitAborted = 3;
 inline constexpr int kExitLostClock = 4;
 inline constexpr int kExitStartup = 5;
 inline constexpr int kExitInterrupted = 130;
+
+// A loop that did not come round for longer than a wait slice plus this margin was not scheduled (a loaded machine,
+// a niced observer process): the peers' messages of that time may still wait in its transport, unread, so the
+// time is not counted as their silence. The clock and the hosts shift their silence timers by own_stall_s().
+inline constexpr double kOwnStallMarginS = 0.25;
+inline double own_stall_s(double since_last_loop_s) {
+    return since_last_loop_s > kWaitSliceS + kOwnStallMarginS ? since_last_loop_s - kWaitSliceS : 0.0;
+}
 
 inline double steady_now_s() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();

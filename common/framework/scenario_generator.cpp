@@ -28,6 +28,17 @@ YAML::Node drawn_scenario(const YAML::Node& doc, std::uint64_t seed, std::uint64
     bare["generator"] = YAML::Clone(gen);
     bare["run"]["seed"] = seed;
     bare["run"]["run_index"] = run_index;
+    // The run's timing, which a generator may move (a calibration pattern starts the run earlier). Kept in the
+    // drawn scenario only where the generator changed it, so that scenarios whose generator leaves it alone draw
+    // what they drew before (gdnav compare matches batches by this text's SHA-256).
+    static const char* const kTiming[] = {"t0_s", "dt_s", "duration_s", "steps"};
+    const YAML::Node run = doc["run"];
+    std::map<std::string, std::string> given;
+    for (const char* k : kTiming)
+        if (run && run.IsMap() && run[k] && run[k].IsScalar()) {
+            bare["run"][k] = YAML::Clone(run[k]);
+            given[k] = run[k].Scalar();
+        }
     YAML::Node comps(YAML::NodeType::Map);
     if (doc["components"] && doc["components"].IsMap())
         for (const auto& c : doc["components"])
@@ -35,6 +46,9 @@ YAML::Node drawn_scenario(const YAML::Node& doc, std::uint64_t seed, std::uint64
     bare["components"] = comps;
     YAML::Node drawn = (*g)(bare, seed, run_index, origin);
     drawn.remove("generator");
+    if (YAML::Node r = drawn["run"]; r && r.IsMap())
+        for (const auto& [k, v] : given)
+            if (r[k] && r[k].IsScalar() && r[k].Scalar() == v) r.remove(k);
     return drawn;
 }
 

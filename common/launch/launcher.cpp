@@ -14,9 +14,11 @@
 #include <thread>
 
 #include <spdlog/spdlog.h>
+#include <yaml-cpp/yaml.h>
 
 #include "framework/direct_executor.hpp"
 #include "framework/lockstep.hpp"
+#include "framework/run_members.hpp"
 #include "dds/process/process_signals.hpp"
 #include "dds/security/security.hpp"
 #include "launch/children.hpp"
@@ -106,8 +108,29 @@ fs::path write_run_yaml(const RunConfig& rc, const LaunchOptions& opt) {
     // The closing line reads the clock's summary of this run: none of an earlier run in this folder may stand in.
     if (opt.start_clock) fs::remove(fs::path(rc.out_dir) / "clock_summary.yaml");
     const fs::path run_yaml = fs::path(rc.out_dir) / "run.yaml";
+    // An in-process Python member's entry records the SHA-256 of its file, as processes.yaml does for a started
+    // member's program: which code flew is part of the result. (A missing file is left to the member's own one-line
+    // error.) Scalars keep their text when re-emitted, so the other keys are written as to_yaml() writes them.
+    std::string text = rc.to_yaml();
+    YAML::Node doc = YAML::Load(text);
+    bool hashed = false;
+    if (YAML::Node comps = doc["components"]; comps && comps.IsMap())
+        for (auto it = comps.begin(); it != comps.end(); ++it) {
+            YAML::Node c = it->second;
+            if (!c.IsMap() || !c["type"] || !c["file"] || c["type"].as<std::string>() != kPythonMemberType) continue;
+            const fs::path file = c["file"].as<std::string>();
+            if (!fs::is_regular_file(file)) continue;
+            c["sha256"] = sha256_of_file(file);
+            hashed = true;
+        }
+    if (hashed) {
+        YAML::Emitter em;
+        em.SetDoublePrecision(17);
+        em << doc;
+        text = std::string(em.c_str()) + "\n";
+    }
     std::ofstream f(run_yaml);
-    f << "# Resolved run configuration written by gdnav run (layout " << opt.layout << ")\n" << rc.to_yaml();
+    f << "# Resolved run configuration written by gdnav run (layout " << opt.layout << ")\n" << text;
     return run_yaml;
 }
 

@@ -100,6 +100,9 @@ void PythonComponent::configure(const config::Config& cfg, const runtime::RunInf
     file_ = cfg.get_string("file");
     class_ = cfg.get_string("class");
     const std::string replaces = cfg.get_string("replaces", "");
+    // Written by the launcher into run.yaml as the record of which file flew; not checked here (the file is read
+    // once, at this configure, in each process that hosts the member).
+    (void)cfg.get_string("sha256", "");
     run_ = run;
     view_.dt_s = run.dt_s;
     if (!fs::is_regular_file(file_)) fail("no such file");

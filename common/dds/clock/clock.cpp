@@ -130,6 +130,7 @@ bool Clock::Impl::everyone_ready() {
 
 int Clock::Impl::loop() {
     start_s = steady_now_s();
+    double last_wake_s = start_s;
     ConditionSeq active;
     while (true) {
         double now = steady_now_s();
@@ -145,6 +146,12 @@ int Clock::Impl::loop() {
         }
         waitset.wait(active, Duration_t(0, static_cast<std::uint32_t>(wait * 1e9)));
         now = steady_now_s();
+        const double stall = own_stall_s(now - last_wake_s);
+        last_wake_s = now;
+        if (stall > 0.0) {  // the members' silence meanwhile is not counted
+            for (Member* m : table) m->last_seen_s += stall;
+            spdlog::debug("clock: not scheduled for {:.2f} s; the members' silence meanwhile is not counted", stall);
+        }
         if (stop_requested()) {
             abort_reason = "clock interrupted by signal " + std::to_string(stop_signal());
             return finish(kExitInterrupted, now);

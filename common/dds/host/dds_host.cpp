@@ -116,6 +116,12 @@ bool DdsHost::Impl::tick_over(int& code) {
         code = kExitStepFailed;
         return false;
     }
+    if (const double stall = last_loop_s > 0.0 ? own_stall_s(now - last_loop_s) : 0.0; stall > 0.0) {
+        control.discount_own_stall(stall);
+        spdlog::debug("host {}: not scheduled for {:.2f} s; the clock's silence meanwhile is not counted",
+                      control.host_id(), stall);
+    }
+    last_loop_s = now;
     if (!control.read_control(code, *this)) return false;
     if (not_in_table) {
         code = kExitStartup;

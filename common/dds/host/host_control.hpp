@@ -60,6 +60,8 @@ public:
     [[nodiscard]] bool clock_matched() const;
     // Starts the clock's silence timer (the main loop's start).
     void start(double now);
+    // The host's loop was not scheduled for `stall_s` (own_stall_s): that time is not the clock's silence.
+    void discount_own_stall(double stall_s) { last_clock_s_ += stall_s; }
     // False when the clock is missing or lost (then `code` is the exit code).
     bool clock_alive(double now, int& code) const;
 

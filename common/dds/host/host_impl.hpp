@@ -53,6 +53,7 @@ struct DdsHost::Impl final : host::ControlHandler {
     bool in_advance{false};
     bool not_in_table{false};
     bool closing{false};
+    double last_loop_s{0.0};  // when tick_over last ran (own_stall_s)
     // A member's step threw: this process leaves the run with exit code 1, telling the clock why (STATUS_ERROR).
     std::string step_error;
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "launch/member_process.hpp"
 #include "process_util.hpp"
 
 using namespace gdnav::testing;
@@ -65,12 +66,16 @@ TEST(PythonInProcess, RecordsTheSameTopicsAsTheExternalMember) {
     ASSERT_EQ(d.exit_code, 0) << d.output;
     EXPECT_NE(d.output.find("Python step callback (in process), 3000 steps"), std::string::npos) << d.output;
     EXPECT_EQ(read_digests(direct), want) << read_file(direct / "record" / "digest.yaml");
+    // run.yaml names the class's file and records its SHA-256, as processes.yaml does for a started member.
+    const std::string sha = "sha256: " + gdnav::runtime::sha256_of_file(kExample);
     EXPECT_NE(read_file(direct / "run.yaml").find("type: python_member"), std::string::npos);
+    EXPECT_NE(read_file(direct / "run.yaml").find(sha), std::string::npos) << read_file(direct / "run.yaml");
 
     const fs::path composed = temp_dir("pyinproc-composed");
     const Result c = run(gdnav_run("composed", composed, {"--record", "all", "--domain", "171", "--set", set}), 120.0);
     ASSERT_EQ(c.exit_code, 0) << c.output;
     EXPECT_EQ(read_digests(composed), want) << read_file(composed / "record" / "digest.yaml");
+    EXPECT_NE(read_file(composed / "run.yaml").find(sha), std::string::npos) << read_file(composed / "run.yaml");
 }
 
 TEST(PythonInProcess, MonteCarloBatchInDirectLayout) {

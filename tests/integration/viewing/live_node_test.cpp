@@ -205,10 +205,12 @@ TEST(LiveNode, StalledClientCostsTheRunNothingAndItsFramesAreDroppedAndCounted) 
     const fs::path run_log_file = out.parent_path() / (out.filename().string() + ".run.log");
     const fs::path client_json = out.parent_path() / (out.filename().string() + ".client.json");
     // 10000 steps, every topic every step (~19 MB of messages) at 20x real time: far more than the socket buffers of
-    // a client that reads nothing plus the bridge's 1 MiB per client.
+    // a client that reads nothing plus the bridge's 1 MiB per client. The bridge's process keeps its CPU priority
+    // (run.observer_nice 0): at nice 19 on a loaded machine it gives up most steps (as an observer may), streams a
+    // few hundred frames, and the client's buffers never fill.
     const pid_t run_pid = start({GDNAV_GDNAV_EXE, "run", "--scenario", "paper2", "--seed", "1", "--steps", "10000",
                                  "--layout", "distributed", "--realtime", "20", "--live", std::to_string(port),
-                                 "--live-decimation", "1", "--out", out.string()},
+                                 "--live-decimation", "1", "--set", "run.observer_nice=0", "--out", out.string()},
                                 run_log_file);
     const pid_t client_pid = start({GDNAV_NODE, client_script(), "ws://127.0.0.1:" + std::to_string(port),
                                     client_json.string(), "stall", "300"},

@@ -1,7 +1,7 @@
 // The default DDS profile (config/dds/gdnav_profiles.xml) as Fast DDS actually loads it: UDPv4 only, no shared memory
 // and no data sharing between processes (a SIGKILLed process must not be able to abort a healthy one through a
-// shared-memory mutex, docs/runtime.md "Transports"), the writers keep Fast DDS's default heartbeat period (a
-// short one made long runs stall), and the data writers suppress NACKs for 100 ms (docs/runtime.md "NACK suppression"). Guards against an
+// shared-memory mutex, docs/runtime.md "Transports"), the data writers keep Fast DDS's default heartbeat period (a
+// short one made long runs stall) while the control writers repair within 100 ms, and the data writers suppress NACKs for 100 ms (docs/runtime.md "NACK suppression"). Guards against an
 // edit of the XML silently bringing any of it back; and an observer's reader is best-effort.
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -29,7 +29,16 @@ TEST(DdsProfile, DefaultProfileUsesUdpOnlyWithoutSharedMemory) {
         DataWriter* w = dds.writer(std::string("gdnav_test/") + profile, message_ops<gdnav::msg::Tick>(), profile);
         EXPECT_EQ(w->get_qos().data_sharing().kind(), DataSharingKind::OFF);
         EXPECT_EQ(w->get_qos().reliability().kind, RELIABLE_RELIABILITY_QOS);
-        EXPECT_EQ(w->get_qos().reliable_writer_qos().times.heartbeatPeriod.seconds, 3);
+        // Heartbeat period: Fast DDS's 3 s on the data and latched writers (a short one made long runs stall); 100 ms
+        // on the control writers, so that a Tick or status lost on a loaded machine is repaired well within
+        // run.member_timeout_s (docs/runtime.md "Transports").
+        const auto& hb = w->get_qos().reliable_writer_qos().times.heartbeatPeriod;
+        if (std::string(profile) == kControlWriterProfile) {
+            EXPECT_EQ(hb.seconds, 0);
+            EXPECT_EQ(hb.nanosec, 100'000'000u);
+        } else {
+            EXPECT_EQ(hb.seconds, 3);
+        }
         // NACK suppression: with Fast DDS's 0 every sample written woke the event thread (docs/runtime.md).
         const auto& nack = w->get_qos().reliable_writer_qos().times.nackSupressionDuration;
         // Data writers only: control writers (statuses before discovery completes) repair a first sample at once.
