@@ -103,32 +103,35 @@ void check_layout(const RunConfig& rc, const LaunchOptions& opt) {
                                   "composed or distributed (the direct layout has no transport)");
 }
 
+// The resolved document as run.yaml holds it. An in-process Python member's entry records the SHA-256 of its file,
+// as processes.yaml does for a started member's program: which code flew is part of the result. (A missing file is
+// left to the member's own one-line error.) Without such a member the text is to_yaml()'s as it is; with one, it is
+// parsed and re-emitted, and scalars keep their text, so the other keys read the same.
+std::string run_yaml_text(const RunConfig& rc) {
+    std::string text = rc.to_yaml();
+    if (std::none_of(rc.members.begin(), rc.members.end(),
+                     [](const MemberSpec& m) { return m.type == kPythonMemberType; }))
+        return text;
+    YAML::Node doc = YAML::Load(text);
+    for (const MemberSpec& m : rc.members) {
+        if (m.type != kPythonMemberType) continue;
+        YAML::Node c = doc["components"][m.name];
+        if (!c["file"]) continue;
+        const fs::path file = c["file"].as<std::string>();
+        if (fs::is_regular_file(file)) c["sha256"] = sha256_of_file(file);
+    }
+    YAML::Emitter em;
+    em.SetDoublePrecision(17);
+    em << doc;
+    return std::string(em.c_str()) + "\n";
+}
+
 fs::path write_run_yaml(const RunConfig& rc, const LaunchOptions& opt) {
     fs::create_directories(rc.out_dir);
     // The closing line reads the clock's summary of this run: none of an earlier run in this folder may stand in.
     if (opt.start_clock) fs::remove(fs::path(rc.out_dir) / "clock_summary.yaml");
     const fs::path run_yaml = fs::path(rc.out_dir) / "run.yaml";
-    // An in-process Python member's entry records the SHA-256 of its file, as processes.yaml does for a started
-    // member's program: which code flew is part of the result. (A missing file is left to the member's own one-line
-    // error.) Scalars keep their text when re-emitted, so the other keys are written as to_yaml() writes them.
-    std::string text = rc.to_yaml();
-    YAML::Node doc = YAML::Load(text);
-    bool hashed = false;
-    if (YAML::Node comps = doc["components"]; comps && comps.IsMap())
-        for (auto it = comps.begin(); it != comps.end(); ++it) {
-            YAML::Node c = it->second;
-            if (!c.IsMap() || !c["type"] || !c["file"] || c["type"].as<std::string>() != kPythonMemberType) continue;
-            const fs::path file = c["file"].as<std::string>();
-            if (!fs::is_regular_file(file)) continue;
-            c["sha256"] = sha256_of_file(file);
-            hashed = true;
-        }
-    if (hashed) {
-        YAML::Emitter em;
-        em.SetDoublePrecision(17);
-        em << doc;
-        text = std::string(em.c_str()) + "\n";
-    }
+    const std::string text = run_yaml_text(rc);
     std::ofstream f(run_yaml);
     f << "# Resolved run configuration written by gdnav run (layout " << opt.layout << ")\n" << text;
     return run_yaml;
