@@ -25,6 +25,10 @@ using namespace gdnav::runtime;
 
 namespace {
 
+// The clock's summary and faults.yaml are written when Clock::run returns; what follows is DDS tear-down only, which
+// normally takes well under a second.
+constexpr double kClockTeardownDeadlineS = 10.0;
+
 struct RunArgs {
     std::string scenario{"default"};
     std::uint64_t seed{1};
@@ -214,6 +218,7 @@ CLI::App* add_clock_command(CLI::App& app, CliContext& ctx, CommandRunner& run) 
             co.ready_fd = *ready_fd;
             Clock clock(rc, co);
             code = clock.run();
+            bound_teardown(code, kClockTeardownDeadlineS);
         }  // clock_summary.yaml and faults.yaml are written
         exit_keeping_participants(code);
     };

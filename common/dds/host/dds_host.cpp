@@ -36,7 +36,7 @@ void DdsHost::Impl::setup() {
         std::all_of(raw.begin(), raw.end(), [](const Component* c) { return host::hosted_as_observer(*c); });
     if (observers_only && rc.observer_nice > 0) {
         const std::string who = join_topics(hosted);
-        if (const std::string p = lower_cpu_priority(rc.observer_nice); p.empty())
+        if (const std::string p = lower_cpu_priority(rc.observer_nice, control.pulse_tid()); p.empty())
             spdlog::info("{}: only observers in this process: CPU priority nice {} (run.observer_nice)", who,
                          rc.observer_nice);
         else
@@ -149,6 +149,7 @@ int DdsHost::Impl::loop() {
         lock.unlock();
         pump();
     }
+    control.stop_pulse();
     // STOP came after every barrier member's last StepDone, so the samples of the last steps are here: an observer,
     // which nobody waited for, computes what it still can before it finishes.
     if (code == kExitOk) process_data(steady_now_s());

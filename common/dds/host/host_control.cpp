@@ -5,6 +5,7 @@
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
 #include <spdlog/spdlog.h>
 
+#include "dds/process/process_priority.hpp"
 #include "framework/graph.hpp"
 
 namespace gdnav::runtime::host {
@@ -15,7 +16,8 @@ ControlPlane::ControlPlane(const RunConfig& rc, bool rejoin)
     : rc_(rc),
       rejoin_(rejoin),
       timing_{rc.info, rc.window_steps, rc.done_every(), rc.member_timeout_s},
-      announce_timeout_s_(rc.startup_timeout_s + (rc.external.empty() ? 0.0 : rc.join_timeout_s)) {}
+      announce_timeout_s_(rc.startup_timeout_s + (rc.external.empty() ? 0.0 : rc.join_timeout_s)),
+      pulse_(&ControlPlane::pulse_loop, this) {}
 
 void ControlPlane::open(DdsContext& dds) {
     tick_reader_ = dds.reader(topics::kTick, message_ops<msg::Tick>(), kControlReaderProfile);
@@ -36,21 +38,26 @@ void ControlPlane::wait(ConditionSeq& active, const eprosima::fastrtps::Duration
     waitset_.wait(active, slice);
 }
 
-void ControlPlane::send_status(const Local& l, msg::StatusKind kind, const std::string& message) {
+void ControlPlane::fill_status(const Local& l, msg::StatusKind kind, const std::string& message,
+                               msg::ComponentStatus& out) const {
     const RunInfo& ri = timing_.ri;
-    status_out_.run_id(ri.run_index);
-    status_out_.step(l.next_step == 0 ? 0 : l.next_step - 1);
-    status_out_.t_s(ri.time_of(status_out_.step()));
-    status_out_.member(l.comp->name());
-    status_out_.host(host_id_);
-    status_out_.kind(kind);
-    status_out_.inputs(join_topics(input_topics(*l.comp)));
-    status_out_.outputs(join_topics(output_topics(*l.comp)));
-    status_out_.free_running(!l.barrier);  // an observer: no outputs and not in the barrier (docs/protocol.md)
-    status_out_.message(message);
-    status_out_.protocol_version(msg::LOCKSTEP_PROTOCOL_VERSION);
-    status_out_.faults_version(faults_version_);
-    status_out_.run_token(token_);
+    out.run_id(ri.run_index);
+    out.step(l.next_step == 0 ? 0 : l.next_step - 1);
+    out.t_s(ri.time_of(out.step()));
+    out.member(l.comp->name());
+    out.host(host_id_);
+    out.kind(kind);
+    out.inputs(join_topics(input_topics(*l.comp)));
+    out.outputs(join_topics(output_topics(*l.comp)));
+    out.free_running(!l.barrier);  // an observer: no outputs and not in the barrier (docs/protocol.md)
+    out.message(message);
+    out.protocol_version(msg::LOCKSTEP_PROTOCOL_VERSION);
+    out.faults_version(faults_version_);
+    out.run_token(token_);
+}
+
+void ControlPlane::send_status(const Local& l, msg::StatusKind kind, const std::string& message) {
+    fill_status(l, kind, message, status_out_);
     status_writer_->write(&status_out_);
 }
 
@@ -70,8 +77,49 @@ void ControlPlane::heartbeat(double now, const std::vector<Local>& locals) {
     const auto kind = phase_ == Phase::Ready ? msg::STATUS_READY : msg::STATUS_HEARTBEAT;
     // A rejoining member asks for its step once it is matched with the run's other members.
     const bool matched = phase_ != Phase::Announce && phase_ != Phase::Matching;
-    for (const auto& l : locals) send_status(l, kind, l.awaiting_rejoin && matched ? "rejoin" : rejected_note(l));
+    std::vector<msg::ComponentStatus> beat(locals.size());
+    for (std::size_t i = 0; i < locals.size(); ++i) {
+        const Local& l = locals[i];
+        fill_status(l, kind, l.awaiting_rejoin && matched ? "rejoin" : rejected_note(l), beat[i]);
+    }
+    const std::lock_guard<std::mutex> lock(beat_mtx_);
+    for (msg::ComponentStatus& s : beat) status_writer_->write(&s);
+    beat_ = std::move(beat);
+    beat_sent_s_ = now;
 }
+
+void ControlPlane::pulse_loop() {
+    const auto period = std::chrono::duration<double>(kHeartbeatPeriodS);
+    std::unique_lock<std::mutex> lock(beat_mtx_);
+    pulse_tid_ = current_tid();
+    pulse_cv_.notify_all();
+    while (!pulse_stop_) {
+        pulse_cv_.wait_for(lock, period);
+        if (pulse_stop_) break;
+        // Only when the main loop is late: while it runs, its own heartbeats carry the current step.
+        const double now = steady_now_s();
+        if (beat_.empty() || now - beat_sent_s_ < 1.5 * kHeartbeatPeriodS) continue;
+        for (msg::ComponentStatus& s : beat_) status_writer_->write(&s);
+        beat_sent_s_ = now;
+    }
+}
+
+int ControlPlane::pulse_tid() {
+    std::unique_lock<std::mutex> lock(beat_mtx_);
+    pulse_cv_.wait(lock, [this] { return pulse_tid_ != 0 || pulse_stop_; });
+    return pulse_tid_;
+}
+
+void ControlPlane::stop_pulse() {
+    {
+        const std::lock_guard<std::mutex> lock(beat_mtx_);
+        pulse_stop_ = true;
+    }
+    pulse_cv_.notify_all();
+    if (pulse_.joinable()) pulse_.join();
+}
+
+ControlPlane::~ControlPlane() { stop_pulse(); }
 
 bool ControlPlane::read_control(int& code, ControlHandler& handler) {
     SampleInfo info;

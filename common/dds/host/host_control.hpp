@@ -1,8 +1,11 @@
 #pragma once
 // The DDS host's control plane (docs/protocol.md §3): the clock's RunControl (CONFIGURE, FAULTS, STOP, ABORT), its
 // Ticks and heartbeats, the host's own ComponentStatus and StepDone, the member table and the host's phase.
+#include <condition_variable>
 #include <cstdint>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <fastdds/dds/core/condition/WaitSet.hpp>
@@ -41,6 +44,9 @@ public:
     enum class Phase { Announce, Matching, Ready, Running };
 
     ControlPlane(const RunConfig& rc, bool rejoin);
+    ~ControlPlane();
+    ControlPlane(const ControlPlane&) = delete;
+    ControlPlane& operator=(const ControlPlane&) = delete;
 
     // The control topics' readers and writers; the waitset wakes on RunControl and ComponentStatus.
     void open(DdsContext& dds);
@@ -60,11 +66,19 @@ public:
     [[nodiscard]] bool clock_matched() const;
     // Starts the clock's silence timer (the main loop's start).
     void start(double now);
+    // The pulse thread (see heartbeat) starts with the control plane, before the host lowers its process's CPU
+    // priority, which spares it (pulse_tid). stop_pulse ends it: when the main loop ends, before the last statuses
+    // and before DDS is torn down.
+    [[nodiscard]] int pulse_tid();
+    void stop_pulse();
     // The host's loop was not scheduled for `stall_s` (own_stall_s): that time is not the clock's silence.
     void discount_own_stall(double stall_s) { last_clock_s_ += stall_s; }
     // False when the clock is missing or lost (then `code` is the exit code).
     bool clock_alive(double now, int& code) const;
 
+    // The members' heartbeats, every kHeartbeatPeriodS. A pulse thread repeats the last ones while the main loop
+    // is held up (a long step, a write that blocks on the disk): a heartbeat says the process is alive, and a member
+    // that is alive but makes no progress is the clock's stall_timeout_s to judge, not member_timeout_s.
     void heartbeat(double now, const std::vector<Local>& locals);
     void send_status(const Local& l, msg::StatusKind kind, const std::string& message);
     // Waits, at most 1 s, until the clock has acknowledged the statuses sent: a member's last status (its error or
@@ -101,6 +115,8 @@ public:
 
 private:
     bool configure(int& code, ControlHandler& handler);
+    void fill_status(const Local& l, msg::StatusKind kind, const std::string& message, msg::ComponentStatus& out) const;
+    void pulse_loop();
     // Whether a RunControl sample is this run's: before joining, any CONFIGURE (the first one is joined), STOP or
     // ABORT of the run id; afterwards only those of the run token.
     bool ours(const msg::RunControl& c);
@@ -139,6 +155,15 @@ private:
     msg::ComponentStatus status_in_;
     msg::ComponentStatus status_out_;
     msg::StepDone done_;
+
+    // The pulse: the heartbeats the main loop sent last, and when (steady seconds); both under beat_mtx_.
+    std::mutex beat_mtx_;
+    std::condition_variable pulse_cv_;
+    std::vector<msg::ComponentStatus> beat_;
+    double beat_sent_s_{0.0};
+    bool pulse_stop_{false};
+    int pulse_tid_{0};
+    std::thread pulse_;
 };
 
 }  // namespace gdnav::runtime::host

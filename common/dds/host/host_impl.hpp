@@ -61,7 +61,11 @@ struct DdsHost::Impl final : host::ControlHandler {
         : rc(r), opt(std::move(o)), owned(std::move(m)) {}
 
     // DDS goes first: its listeners (ours, the outputs' match counts) must outlive its readers and writers.
-    ~Impl() override { dds.reset(); }
+    // The pulse thread writes on DDS: it stops before.
+    ~Impl() override {
+        control.stop_pulse();
+        dds.reset();
+    }
 
     void setup();
     // Member c of this process: its inputs' inboxes and readers, its outputs' writers and mirrors.

@@ -18,4 +18,10 @@ void keep_participants_until_exit();
 // participant is deleted. Call it only when every result is written and closed (the host and the clock destroyed).
 [[noreturn]] void exit_keeping_participants(int code);
 
+// Bounds the tear-down that follows a run whose results are all written: if the process has not ended `deadline_s`
+// from now, it leaves through exit_keeping_participants(code), with one warning. Fast DDS 2.9.1 can deadlock while it
+// deletes an endpoint matched with a peer whose lease expires at that moment (docs/runtime.md, "Shutdown"), and a
+// process that never ends holds its launcher and every run queued behind it.
+void bound_teardown(int code, double deadline_s);
+
 }  // namespace gdnav::runtime

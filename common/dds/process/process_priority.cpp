@@ -18,12 +18,14 @@ int tid_of(int tid) { return tid != 0 ? tid : static_cast<int>(::syscall(SYS_get
 
 }  // namespace
 
+int current_tid() { return tid_of(0); }
+
 int thread_nice(int tid) {
     errno = 0;
     return ::getpriority(PRIO_PROCESS, static_cast<id_t>(tid_of(tid)));  // PRIO_PROCESS with a TID: that thread
 }
 
-std::string lower_cpu_priority(int nice) {
+std::string lower_cpu_priority(int nice, int keep_tid) {
     if (nice < 1 || nice > 19) return "nice value " + std::to_string(nice) + " outside 1..19";
     const auto set = [nice](int tid) -> std::string {
         if (thread_nice(tid) >= nice || ::setpriority(PRIO_PROCESS, static_cast<id_t>(tid), nice) == 0) return {};
@@ -36,7 +38,7 @@ std::string lower_cpu_priority(int nice) {
     std::error_code ec;
     for (const auto& entry : std::filesystem::directory_iterator("/proc/self/task", ec)) {
         const int tid = std::atoi(entry.path().filename().c_str());
-        if (tid <= 0) continue;
+        if (tid <= 0 || tid == keep_tid) continue;
         if (std::string p = set(tid); !p.empty()) return p;
     }
     if (ec) return "cannot list /proc/self/task: " + ec.message();

@@ -7,11 +7,16 @@
 
 namespace gdnav::runtime {
 
-// Sets every thread of this process to `nice` (1..19; only ever raised: a thread already nicer keeps its value).
-// Returns an empty string, or what failed (the process then runs on at its old priority).
-std::string lower_cpu_priority(int nice);
+// Sets every thread of this process but `keep_tid` (0: none) to `nice` (1..19; only ever raised: a thread already
+// nicer keeps its value). The kept thread is the host's heartbeat pulse: a starved observer falls behind and skips
+// steps, but stays alive for the clock. Returns an empty string, or what failed (the process then runs on at its old
+// priority).
+std::string lower_cpu_priority(int nice, int keep_tid = 0);
 
 // The nice value of thread `tid` of this process (0: the calling thread); for tests and logs.
 int thread_nice(int tid = 0);
+
+// The calling thread's id (gettid).
+int current_tid();
 
 }  // namespace gdnav::runtime

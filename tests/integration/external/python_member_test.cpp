@@ -101,6 +101,32 @@ TEST(PythonMember, ExceptionInTheStepCallbackEndsTheMemberNotTheRun) {
     EXPECT_EQ(run_log.find("exit code 130"), std::string::npos) << run_log;
 }
 
+TEST(PythonMember, AStepLongerThanTheMemberTimeoutIsNotADeadMember) {
+    // Step 300 of the member takes 3 s, twice the default run.member_timeout_s: its heartbeats go on from the host's
+    // pulse thread, so the clock waits for the step (a lack of progress is run.stall_timeout_s's to judge, 60 s) and
+    // the run completes with every member.
+    const fs::path out = temp_dir("pyslow");
+    const std::string domain = fresh_domain();
+    const pid_t launcher = start({GDNAV_GDNAV_EXE, "run", "--scenario", "paper2", "--seed", "1", "--layout",
+                                  "distributed", "--external", "nav_att", "--domain", domain, "--steps", "1000",
+                                  "--out", out.string()},
+                                 out.string() + ".run.log");
+    const pid_t member = start(python(kDir + "/slow_member.py", {"--domain", domain}), out.string() + ".member.log");
+    const int member_code = wait_for(member, 120.0);
+    const int run_code = wait_for(launcher, 60.0);
+    if (member_code == -1) kill(member, SIGKILL);
+    if (run_code == -1) kill(launcher, SIGINT);
+    const std::string run_log = read_file(out.string() + ".run.log");
+    const std::string member_log = read_file(out.string() + ".member.log");
+    EXPECT_EQ(member_code, 0) << member_log;
+    ASSERT_EQ(run_code, 0) << run_log;
+    EXPECT_EQ(run_log.find("declared dead"), std::string::npos) << run_log;
+    EXPECT_EQ(run_log.find("run completed without"), std::string::npos) << run_log;
+    const std::string summary = read_file(out / "clock_summary.yaml");
+    EXPECT_EQ(summary.find("- {name: "), std::string::npos) << "a dead member:\n" << summary;
+    EXPECT_NE(summary.find("reproducible: true"), std::string::npos) << summary;
+}
+
 TEST(PythonMember, ComplementaryFilterReplacesNavAttAndFliesScenario2) {
     const fs::path out = temp_dir("pyatt");
     const std::string domain = fresh_domain();

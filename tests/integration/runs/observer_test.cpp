@@ -63,12 +63,18 @@ TEST(Observer, APausedLiveBridgeDoesNotHoldADistributedRun) {
     const auto procs = read_processes(out);
     ASSERT_TRUE(procs.count("live")) << read_file(log);
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
-    // A process of observers only runs at run.observer_nice (default 19), every thread of it; the barrier members
+    // A process of observers only runs at run.observer_nice (default 19), every thread of it but one; the barrier members
     // keep the priority they were started with (this test's).
     const int own = getpriority(PRIO_PROCESS, 0);
     const std::vector<int> live_nice = thread_nices(procs.at("live")), att_nice = thread_nices(procs.at("nav_att"));
     ASSERT_GE(live_nice.size(), 2u);
-    for (int n : live_nice) EXPECT_EQ(n, std::max(own, 19)) << "a thread of the live bridge";
+    // All but one: the heartbeat pulse keeps the priority, so that a starved bridge stays alive for the clock.
+    EXPECT_EQ(std::count(live_nice.begin(), live_nice.end(), std::max(own, 19)),
+              static_cast<long>(live_nice.size()) - (own < 19 ? 1 : 0))
+        << "the threads of the live bridge";
+    if (own < 19) {
+        EXPECT_EQ(std::count(live_nice.begin(), live_nice.end(), own), 1) << "the bridge's pulse thread";
+    }
     for (int n : att_nice) EXPECT_EQ(n, own) << "a thread of nav_att";
     ASSERT_EQ(kill(procs.at("live"), SIGSTOP), 0);
     std::this_thread::sleep_for(std::chrono::seconds(2));
@@ -78,12 +84,18 @@ TEST(Observer, APausedLiveBridgeDoesNotHoldADistributedRun) {
     ASSERT_EQ(code, 0) << text;
 
     std::smatch m;
-    ASSERT_TRUE(std::regex_search(text, m, std::regex(R"(observer 'live': computed (\d+) of (\d+) steps, skipped (\d+))")))
+    ASSERT_TRUE(std::regex_search(
+        text, m,
+        std::regex(R"(observer 'live': computed (\d+) of (\d+) steps, skipped (\d+)(, (\d+) not reached before the end)?)")))
         << text;
     const long computed = std::stol(m[1]), total = std::stol(m[2]), skipped = std::stol(m[3]);
-    std::printf("observer 'live' paused 2 s: computed %ld of %ld steps, skipped %ld\n", computed, total, skipped);
+    // On an over-committed machine the bridge, at nice 19, may still be behind when the run ends: those steps are
+    // counted apart, and the run did not wait for them either.
+    const long unreached = m[5].matched ? std::stol(m[5]) : 0;
+    std::printf("observer 'live' paused 2 s: computed %ld of %ld steps, skipped %ld, not reached %ld\n", computed,
+                total, skipped, unreached);
     EXPECT_EQ(total, kSteps);
-    EXPECT_EQ(computed + skipped, kSteps);
+    EXPECT_EQ(computed + skipped + unreached, kSteps);
     EXPECT_GT(skipped, 128) << "the run waited for the paused bridge";
     EXPECT_GT(computed, 0);
 

@@ -58,6 +58,29 @@ TEST(ProcessPriority, EveryThreadBeforeAndAfterGetsTheNiceValue) {
               0);
 }
 
+TEST(ProcessPriority, TheKeptThreadKeepsItsValue) {
+    if (thread_nice() >= 12) GTEST_SKIP() << "the test process already runs at nice " << thread_nice();
+    EXPECT_EQ(in_child([]() -> int {
+                  const int own = thread_nice();
+                  std::atomic<bool> stop{false};
+                  std::atomic<int> kept_tid{0};
+                  std::atomic<int> kept_nice{-1};
+                  std::thread kept([&] {
+                      kept_tid = gdnav::runtime::current_tid();
+                      while (!stop) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                      kept_nice = thread_nice();
+                  });
+                  while (kept_tid == 0) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                  if (!lower_cpu_priority(12, kept_tid).empty()) return 2;
+                  if (thread_nice() != 12) return 3;
+                  stop = true;
+                  kept.join();
+                  if (kept_nice != own) return 4;
+                  return 0;
+              }),
+              0);
+}
+
 TEST(ProcessPriority, OnlyEverRaisesAndRejectsValuesOutside1To19) {
     const int own = thread_nice();
     if (own >= 15) GTEST_SKIP() << "the test process already runs at nice " << own;
