@@ -59,6 +59,31 @@ double clock_wall_s(const fs::path& out) {
     return std::stod(m[2].str());
 }
 
+// A distributed scenario-#2 run of `steps` steps whose nav_att is the Python script `script` (in kDir), started
+// beside it: both exit codes (-1: still running at the deadline, then stopped) and both logs.
+struct MemberRun {
+    int run_code{-1};
+    int member_code{-1};
+    std::string run_log;
+    std::string member_log;
+};
+MemberRun run_with_script_member(const std::string& script, int steps, const fs::path& out) {
+    const std::string domain = fresh_domain();
+    const pid_t launcher = start({GDNAV_GDNAV_EXE, "run", "--scenario", "paper2", "--seed", "1", "--layout",
+                                  "distributed", "--external", "nav_att", "--domain", domain, "--steps",
+                                  std::to_string(steps), "--out", out.string()},
+                                 out.string() + ".run.log");
+    const pid_t member = start(python(kDir + "/" + script, {"--domain", domain}), out.string() + ".member.log");
+    MemberRun r;
+    r.member_code = wait_for(member, 120.0);
+    r.run_code = wait_for(launcher, 60.0);
+    if (r.member_code == -1) kill(member, SIGKILL);
+    if (r.run_code == -1) kill(launcher, SIGINT);
+    r.run_log = read_file(out.string() + ".run.log");
+    r.member_log = read_file(out.string() + ".member.log");
+    return r;
+}
+
 }  // namespace
 
 TEST(PythonMember, BindingsNameTopicFieldAndSizeInErrors) {
@@ -73,19 +98,9 @@ TEST(PythonMember, ExceptionInTheStepCallbackEndsTheMemberNotTheRun) {
     // A member that raises at step 300: it leaves with the Python traceback and exit 1 after telling the clock
     // the exception's text (STATUS_ERROR); the clock declares it dead
     // and the run (which does not list nav_att as essential) completes without it, well before the timeouts.
-    const fs::path out = temp_dir("pyraise");
-    const std::string domain = fresh_domain();
-    const pid_t launcher = start({GDNAV_GDNAV_EXE, "run", "--scenario", "paper2", "--seed", "1", "--layout",
-                                  "distributed", "--external", "nav_att", "--domain", domain, "--steps", "1500",
-                                  "--out", out.string()},
-                                 out.string() + ".run.log");
-    const pid_t member = start(python(kDir + "/raising_member.py", {"--domain", domain}), out.string() + ".member.log");
-    const int member_code = wait_for(member, 120.0);
-    const int run_code = wait_for(launcher, 60.0);
-    if (member_code == -1) kill(member, SIGKILL);
-    if (run_code == -1) kill(launcher, SIGINT);
-    const std::string run_log = read_file(out.string() + ".run.log");
-    const std::string member_log = read_file(out.string() + ".member.log");
+    const MemberRun r = run_with_script_member("raising_member.py", 1500, temp_dir("pyraise"));
+    const int member_code = r.member_code, run_code = r.run_code;
+    const std::string &run_log = r.run_log, &member_log = r.member_log;
     EXPECT_EQ(member_code, 1) << member_log;  // Python's exit code for an uncaught exception, not a signal
     EXPECT_NE(member_log.find("ZeroDivisionError: deliberate failure at step 300"), std::string::npos) << member_log;
     EXPECT_NE(member_log.find("in the step callback of member 'nav_att' at step 300"), std::string::npos) << member_log;
@@ -106,18 +121,9 @@ TEST(PythonMember, AStepLongerThanTheMemberTimeoutIsNotADeadMember) {
     // pulse thread, so the clock waits for the step (a lack of progress is run.stall_timeout_s's to judge, 60 s) and
     // the run completes with every member.
     const fs::path out = temp_dir("pyslow");
-    const std::string domain = fresh_domain();
-    const pid_t launcher = start({GDNAV_GDNAV_EXE, "run", "--scenario", "paper2", "--seed", "1", "--layout",
-                                  "distributed", "--external", "nav_att", "--domain", domain, "--steps", "1000",
-                                  "--out", out.string()},
-                                 out.string() + ".run.log");
-    const pid_t member = start(python(kDir + "/slow_member.py", {"--domain", domain}), out.string() + ".member.log");
-    const int member_code = wait_for(member, 120.0);
-    const int run_code = wait_for(launcher, 60.0);
-    if (member_code == -1) kill(member, SIGKILL);
-    if (run_code == -1) kill(launcher, SIGINT);
-    const std::string run_log = read_file(out.string() + ".run.log");
-    const std::string member_log = read_file(out.string() + ".member.log");
+    const MemberRun r = run_with_script_member("slow_member.py", 1000, out);
+    const int member_code = r.member_code, run_code = r.run_code;
+    const std::string &run_log = r.run_log, &member_log = r.member_log;
     EXPECT_EQ(member_code, 0) << member_log;
     ASSERT_EQ(run_code, 0) << run_log;
     EXPECT_EQ(run_log.find("declared dead"), std::string::npos) << run_log;
