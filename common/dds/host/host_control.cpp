@@ -77,14 +77,14 @@ void ControlPlane::heartbeat(double now, const std::vector<Local>& locals) {
     const auto kind = phase_ == Phase::Ready ? msg::STATUS_READY : msg::STATUS_HEARTBEAT;
     // A rejoining member asks for its step once it is matched with the run's other members.
     const bool matched = phase_ != Phase::Announce && phase_ != Phase::Matching;
-    std::vector<msg::ComponentStatus> beat(locals.size());
+    // Filled in place: the pulse repeats exactly these samples, and their strings keep their storage.
+    const std::lock_guard<std::mutex> lock(beat_mtx_);
+    beat_.resize(locals.size());
     for (std::size_t i = 0; i < locals.size(); ++i) {
         const Local& l = locals[i];
-        fill_status(l, kind, l.awaiting_rejoin && matched ? "rejoin" : rejected_note(l), beat[i]);
+        fill_status(l, kind, l.awaiting_rejoin && matched ? "rejoin" : rejected_note(l), beat_[i]);
+        status_writer_->write(&beat_[i]);
     }
-    const std::lock_guard<std::mutex> lock(beat_mtx_);
-    for (msg::ComponentStatus& s : beat) status_writer_->write(&s);
-    beat_ = std::move(beat);
     beat_sent_s_ = now;
 }
 
