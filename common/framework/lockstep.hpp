@@ -25,6 +25,12 @@ inline constexpr const char* kClockName = "clock";
 // How long a starting clock listens for another clock on its domain before it takes the domain (several periods
 // of the clocks' heartbeats after DDS discovery between two participants of one host; docs/runtime.md).
 inline constexpr double kClaimListenS = 1.0;
+// The claim goes on while the domain shows other life (a participant discovered, a status of another run's member)
+// until kClaimQuietS without it, and at most kClaimLongestS: under load another clock's heartbeat can come after
+// kClaimListenS, while its participants are still being discovered (docs/protocol.md §1). A domain where nothing
+// else lives pays kClaimListenS only; one where a finished run's members linger pays kClaimLongestS.
+inline constexpr double kClaimQuietS = 0.5;
+inline constexpr double kClaimLongestS = 3.0;
 
 // Exit codes of runtime processes.
 inline constexpr int kExitOk = 0;

@@ -191,7 +191,7 @@ bool start_clock(std::vector<Child>& children, const RunConfig& rc, const Launch
                                                             run_yaml.string(), "--log-level", opt.log_level},
                                           fds[1])});
     close(fds[1]);
-    const double end = steady_now_s() + kClaimListenS + rc.startup_timeout_s;
+    const double end = steady_now_s() + kClaimLongestS + rc.startup_timeout_s;
     char c = 0;
     ssize_t n = -1;
     pollfd p{fds[0], POLLIN, 0};

@@ -166,8 +166,9 @@ int Clock::Impl::loop() {
     }
 }
 
-// The domain is this run's when no other clock was heard for kClaimListenS (the clock's own heartbeats go out
-// meanwhile, so two clocks started together both refuse rather than share the domain).
+// The domain is this run's when no other clock was heard for kClaimListenS and the domain has shown no other life
+// (discovery, another run's member) for kClaimQuietS, or after kClaimLongestS (lockstep.hpp). The clock's own
+// heartbeats go out meanwhile, so two clocks started together both refuse rather than share the domain.
 int Clock::Impl::claim_phase(double now) {
     if (!rival.empty()) {
         spdlog::error("DDS domain {} is in use by another run ({}); this run (token {}) does not start: choose "
@@ -176,9 +177,20 @@ int Clock::Impl::claim_phase(double now) {
         if (opt.ready_fd >= 0) close(opt.ready_fd);
         return kExitStartup;
     }
-    if (now - start_s < kClaimListenS) return kGoOn;
+    if (const std::uint64_t g = dds->participants().generation(); g != participants_seen) {
+        participants_seen = g;
+        other_life_s = now;
+    }
+    const double listened = now - start_s;
+    if (listened < kClaimListenS) return kGoOn;
+    if (listened < kClaimLongestS && now - other_life_s < kClaimQuietS) return kGoOn;
     phase = Phase::Gather;
-    spdlog::debug("DDS domain {} is free: run token {}", rc.domain_id, token_text(token));
+    if (foreign.count() > 0)
+        spdlog::info("DDS domain {}: {} statuses of another run's members heard in {:.1f} s, but not its clock (a run "
+                     "that ended): the domain is this run's",
+                     rc.domain_id, foreign.count(), listened);
+    spdlog::debug("DDS domain {} is free after {:.2f} s of listening: run token {}", rc.domain_id, listened,
+                  token_text(token));
     if (opt.ready_fd >= 0) {
         if (write(opt.ready_fd, "1", 1) != 1) spdlog::warn("cannot tell the launcher that the domain is claimed");
         close(opt.ready_fd);

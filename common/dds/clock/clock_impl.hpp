@@ -74,6 +74,8 @@ struct Clock::Impl {
     const std::uint64_t token{draw_run_token()};  // the run's token (on the wire only)
     ForeignRuns foreign;                          // control messages of other runs (other tokens), ignored
     std::string rival;                            // another clock heard while claiming the domain
+    double other_life_s{0.0};                     // while claiming: when the domain last showed other life
+    std::uint64_t participants_seen{0};           // while claiming: discovery generation last looked at
     // The fault schedule: the run config's, grown by faults injected live (gdnav fault). Members acknowledge each
     // version (ComponentStatus.faults_version) before the clock lets the run reach the step a new fault acts at.
     faults::FaultSchedule schedule{rc.faults};

@@ -3,10 +3,13 @@
 //    first completes with the outputs of the same run alone;
 //  - control messages of another run (another run token: a member's status and StepDone, a clock's heartbeat, Tick,
 //    RunControl ABORT) are ignored and counted;
+//  - a clock heard late (after kClaimListenS, while its run's members are already heard) is still refused; members
+//    of an ended run (no clock) hold the domain no longer than kClaimLongestS;
 //  - runs without --domain started together get different domains.
 #include <gtest/gtest.h>
 #include <signal.h>
 
+#include <atomic>
 #include <chrono>
 #include <regex>
 #include <thread>
@@ -29,6 +32,8 @@ namespace {
 // Domains of these tests (below the other integration tests' 120-232, above the launcher's first free ones).
 constexpr int kSharedDomain = 111;
 constexpr int kForeignDomain = 112;
+constexpr int kLateClockDomain = 113;
+constexpr int kEndedRunDomain = 114;
 
 // The test chain, distributed, paced to 10x real time: 3000 steps = 30 s simulated, about 3 s of wall time.
 std::vector<std::string> chain_run(const fs::path& out, const std::string& layout, int domain) {
@@ -60,7 +65,74 @@ std::size_t count_of(const std::string& text, const std::string& what) {
     return n;
 }
 
+// Another run as the domain shows it to a starting clock: its member's heartbeats every 50 ms from the start and,
+// from `clock_after` on (never when negative), its clock's heartbeat naming its output folder.
+class OtherRun {
+public:
+    OtherRun(int domain, std::chrono::milliseconds clock_after) : dds_(domain, rt::config_dir() / "dds" / "gdnav_profiles.xml", "gdnav.test.other") {
+        rt::register_gdnav_topics();
+        writer_ = dds_.writer(gdnav::topics::kStatus, rt::message_ops<gdnav::msg::ComponentStatus>(),
+                              rt::kControlWriterProfile);
+        thread_ = std::thread([this, clock_after] {
+            const auto t0 = std::chrono::steady_clock::now();
+            while (!stop_) {
+                const bool clock = clock_after.count() >= 0 && std::chrono::steady_clock::now() - t0 >= clock_after;
+                write("chain_plant", "");
+                if (clock) write(rt::kClockName, "/elsewhere/other-run");
+                std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            }
+        });
+    }
+    ~OtherRun() {
+        stop_ = true;
+        thread_.join();
+    }
+    OtherRun(const OtherRun&) = delete;
+    OtherRun& operator=(const OtherRun&) = delete;
+
+private:
+    void write(const char* member, const char* message) {
+        gdnav::msg::ComponentStatus s;
+        s.run_id(7);
+        s.member(member);
+        s.host("other:1");
+        s.kind(gdnav::msg::STATUS_HEARTBEAT);
+        s.message(message);
+        s.protocol_version(gdnav::msg::LOCKSTEP_PROTOCOL_VERSION);
+        s.run_token(0x0ddba11c0ffee000ULL);
+        s.step(1234);
+        writer_->write(&s);
+    }
+
+    rt::DdsContext dds_;
+    eprosima::fastdds::dds::DataWriter* writer_{nullptr};
+    std::atomic<bool> stop_{false};
+    std::thread thread_;
+};
+
 }  // namespace
+
+TEST(Domain, AClockHeardAfterTheFirstSecondOfTheClaimIsStillRefused) {
+    const fs::path dir = temp_dir("domain-late-clock");
+    // The other run's clock is heard 2 s after this run's launcher starts, so after kClaimListenS of its clock's
+    // claim (the clock starts after the launcher), while its member is heard from the start.
+    static_assert(rt::kClaimListenS < 2.0 && 2.0 < rt::kClaimLongestS - 0.5);
+    const OtherRun other(kLateClockDomain, std::chrono::milliseconds(2000));
+    const Result b = run(chain_run(dir / "B", "composed", kLateClockDomain), 60.0);
+    EXPECT_EQ(b.exit_code, rt::kExitStartup) << b.output;
+    EXPECT_EQ(count_of(b.output, "is in use by another run"), 1u) << b.output;
+    EXPECT_NE(b.output.find("output /elsewhere/other-run"), std::string::npos) << b.output;
+    EXPECT_FALSE(fs::exists(dir / "B" / "processes.yaml")) << "members were started: " << b.output;
+}
+
+TEST(Domain, MembersOfARunWhoseClockIsGoneDoNotHoldTheDomain) {
+    const fs::path dir = temp_dir("domain-ended-run");
+    const OtherRun other(kEndedRunDomain, std::chrono::milliseconds(-1));
+    const Result b = run(chain_run(dir / "B", "composed", kEndedRunDomain), 60.0);
+    ASSERT_EQ(b.exit_code, 0) << b.output;
+    EXPECT_EQ(count_of(b.output, "but not its clock (a run that ended)"), 1u) << b.output;
+    EXPECT_TRUE(YAML::LoadFile((dir / "B" / "clock_summary.yaml").string())["completed"].as<bool>());
+}
 
 TEST(Domain, SecondRunOnADomainRefusesBeforeItsMembersStartFirstRunUnchanged) {
     const fs::path dir = temp_dir("domain-shared");
