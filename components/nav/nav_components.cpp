@@ -136,11 +136,14 @@ private:
 // ------------------------------------------------------------------------------------------------ nav_att
 // Heading from GNSS velocity fused into the attitude filter (nav_att option `yaw_from_gnss`): the estimator's keys
 // (yaw_gsf.cpp) and fuse_sigma_max_deg [0.1, 30] (3: fuse only once the bank has decided), fuse_sigma_min_deg
-// [0.01, 30] (1: floor of the fused sigma, as the estimate's errors are correlated from fix to fix).
+// [0.01, 30] (1: floor of the fused sigma, as the estimate's errors are correlated from fix to fix),
+// fuse_accel_min_mps2 [0, 20] (fuse only while turning: the levelled horizontal specific force over the fix period,
+// YawGsf::turn_accel_mps2, at least this; 0 fuses in straight flight too).
 struct GnssYaw {
     YawGsf gsf;
     double fuse_sigma_max_rad{0.0};
     double fuse_sigma_min_rad{0.0};
+    double fuse_accel_min_mps2{0.0};
 };
 
 class NavAtt final : public VariantFilterComponent<AttitudeFilter, kAttitudeSection> {
@@ -153,6 +156,7 @@ public:
             yaw_->gsf = YawGsf(parse_yaw_gsf(*c));
             yaw_->fuse_sigma_max_rad = c->get_angle_deg("fuse_sigma_max_deg", config::Range{0.1, 30.0});
             yaw_->fuse_sigma_min_rad = c->get_angle_deg("fuse_sigma_min_deg", config::Range{0.01, 30.0});
+            yaw_->fuse_accel_min_mps2 = c->get_double("fuse_accel_min_mps2", config::Range{0.0, 20.0});
             c->finish();
         }
     }
@@ -176,6 +180,7 @@ private:
         g.update(runtime::to_vec3(gnss_.get().v_n_mps()));
         const double var = g.yaw_variance_rad2();
         if (var > yaw_->fuse_sigma_max_rad * yaw_->fuse_sigma_max_rad) return;
+        if (g.turn_accel_mps2() < yaw_->fuse_accel_min_mps2) return;
         (void)filter_.fuse_yaw(g.yaw_rad(), std::max(var, yaw_->fuse_sigma_min_rad * yaw_->fuse_sigma_min_rad));
     }
 

@@ -37,6 +37,8 @@ void YawGsf::predict(double dt, const math::Vec3& w_b, const math::Vec3& f_b, do
     const math::Vec3 lev = math::dcm_from_euler({0.0, pitch, bank}) * f_b;
     const double qa = s_.accel_noise_mps2 * s_.accel_noise_mps2 * dt * dt;
     const double qw = s_.rate_noise_rps * s_.rate_noise_rps * dt * dt;
+    accel_sum_mps2_ += std::hypot(lev.x(), lev.y());
+    ++accel_count_;
     for (Model& m : models_) {
         const double c = std::cos(m.x(2)), s = std::sin(m.x(2));
         const double a_n = c * lev.x() - s * lev.y();
@@ -52,6 +54,9 @@ void YawGsf::predict(double dt, const math::Vec3& w_b, const math::Vec3& f_b, do
 }
 
 void YawGsf::update(const math::Vec3& v_n) {
+    turn_accel_mps2_ = accel_count_ > 0 ? accel_sum_mps2_ / accel_count_ : 0.0;
+    accel_sum_mps2_ = 0.0;
+    accel_count_ = 0;
     double largest = 0.0;
     const double r = s_.velocity_noise_mps * s_.velocity_noise_mps;
     for (Model& m : models_) {

@@ -47,6 +47,11 @@ public:
 
     [[nodiscard]] double yaw_rad() const;
     [[nodiscard]] double yaw_variance_rad2() const;
+    // Mean magnitude of the levelled horizontal specific force over the predictions since the last update (0 before
+    // any): the centripetal acceleration that makes the heading observable. In straight flight it is the size of
+    // the turbulence, and the velocities say nothing of the heading, so a heading carried on from a turn is only
+    // the gyro's integral (with the attitude filter's gyro bias) and must not be fused as if observed.
+    [[nodiscard]] double turn_accel_mps2() const { return turn_accel_mps2_; }
 
 private:
     struct Model {
@@ -56,6 +61,9 @@ private:
     };
     YawGsfSettings s_;
     std::vector<Model> models_;
+    double accel_sum_mps2_{0.0};
+    int accel_count_{0};
+    double turn_accel_mps2_{0.0};
 };
 
 }  // namespace gdnav::nav

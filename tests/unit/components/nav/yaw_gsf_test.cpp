@@ -65,3 +65,30 @@ TEST(NavYawGsf, StaysUndecidedInStraightFlight) {
     std::printf("straight: error %+.2f deg, sigma %.2f deg\n", math::rad2deg(err), math::rad2deg(sigma));
     EXPECT_GT(math::rad2deg(sigma), 20.0);
 }
+
+// The turn gate's measure (YawGsf::turn_accel_mps2): in a coordinated turn at bank phi the levelled horizontal
+// specific force is the centripetal acceleration g tan(phi); in straight and level flight it is the sensor noise.
+TEST(NavYawGsf, MeasuresTheTurnsCentripetalAcceleration) {
+    for (const double bank_deg : {0.0, 10.0, 20.0, 30.0}) {
+        synth::Scenario sc;
+        sc.bank_rad = math::deg2rad(bank_deg);
+        sc.yaw_rate_rps = 9.80665 * std::tan(sc.bank_rad) / sc.tas_mps;
+        synth::Generator gen(sc, rnd::Stream(5));
+        YawGsf g{YawGsfSettings{}};
+        EXPECT_EQ(g.turn_accel_mps2(), 0.0);
+        for (int k = 0; k < 3000; ++k) {
+            const synth::Sample s = gen.next();
+            const math::Euler e = math::euler_from_quat(s.truth.q_nb);
+            if (!g.started()) {
+                if (s.gnss.fix_valid) g.start(s.gnss.v_n_mps);
+                continue;
+            }
+            g.predict(sc.dt_s, s.imu.w_b_rps, s.imu.f_b_mps2, e.pitch_rad, e.bank_rad);
+            if (s.gnss.fix_valid) g.update(s.gnss.v_n_mps);
+        }
+        const double expected = 9.80665 * std::tan(sc.bank_rad);
+        std::printf("bank %4.1f deg: turn acceleration %.3f m/s^2 (g tan(bank) %.3f)\n", bank_deg,
+                    g.turn_accel_mps2(), expected);
+        EXPECT_NEAR(g.turn_accel_mps2(), expected, 0.05 * expected + 0.3);
+    }
+}
