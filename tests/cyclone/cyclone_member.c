@@ -494,7 +494,9 @@ int main(int argc, char **argv) {
 
     dds_qos_t *control = make_qos(DDS_DURABILITY_VOLATILE, 256);
     dds_qos_t *latched = make_qos(DDS_DURABILITY_TRANSIENT_LOCAL, 8);
-    dds_qos_t *data_w = make_qos(DDS_DURABILITY_VOLATILE, 32);
+    /* Writers too: a KEEP_LAST writer replaces a sample that a slow reader has not acknowledged yet, and that reader
+       then never gets the step (the run stalls); the member may be window_steps + 1 steps ahead of it. */
+    dds_qos_t *data_w = make_qos(DDS_DURABILITY_VOLATILE, RING);
     dds_qos_t *data_r = make_qos(DDS_DURABILITY_VOLATILE, RING);  /* depth >= window_steps + 2 */
     m.status_w = check(dds_create_writer(p, t_status, control, NULL), "ComponentStatus writer");
     m.status_r = check(dds_create_reader(p, t_status, control, NULL), "ComponentStatus reader");
