@@ -124,7 +124,7 @@ struct Clock::Impl {
     // A status of member `clock`: ours, a rival while claiming, else a foreign run's (ignored).
     void clock_status(const msg::ComponentStatus& s);
     // Whether a member's status belongs to this run (token 0: a member that has not joined yet).
-    bool ours(const msg::ComponentStatus& s);
+    bool ours(const msg::ComponentStatus& s, double now);
 
     void read_done(double now);
 

@@ -21,7 +21,7 @@ void Clock::Impl::read_status(double now) {
             clock_status(status_in);
             continue;
         }
-        if (!ours(status_in) || status_in.run_id() != rc.info.run_index) continue;  // another token first: counted
+        if (!ours(status_in, now) || status_in.run_id() != rc.info.run_index) continue;  // another token first: counted
         if (status_in.protocol_version() != msg::LOCKSTEP_PROTOCOL_VERSION) {
             if (refused.insert(name).second)
                 spdlog::error("member '{}' ({}) speaks lockstep protocol version {}, this clock speaks {}: refused "
@@ -97,12 +97,12 @@ void Clock::Impl::clock_status(const msg::ComponentStatus& s) {
 // Statuses carry the token of the CONFIGURE their member joined with, or 0 before it has one (it announces itself).
 // Announcements count until the run starts (a member gets the table a moment after the clock sent it); a status
 // of another token is another run's.
-bool Clock::Impl::ours(const msg::ComponentStatus& s) {
+bool Clock::Impl::ours(const msg::ComponentStatus& s, double now) {
     if (s.run_token() == token) return true;
     if (s.run_token() == 0) return phase != Phase::Running;
     if (phase == Phase::Claim) {  // another run's member: its clock is about to be heard (claim_phase says it)
         foreign.count_quietly();
-        other_life_s = steady_now_s();
+        other_life_s = now;
         return false;
     }
     foreign.note(s.run_token(), fmt::format("'{}' on {}", s.member().to_string(), s.host().to_string()),

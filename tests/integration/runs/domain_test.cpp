@@ -69,7 +69,8 @@ std::size_t count_of(const std::string& text, const std::string& what) {
 // from `clock_after` on (never when negative), its clock's heartbeat naming its output folder.
 class OtherRun {
 public:
-    OtherRun(int domain, std::chrono::milliseconds clock_after) : dds_(domain, rt::config_dir() / "dds" / "gdnav_profiles.xml", "gdnav.test.other") {
+    OtherRun(int domain, std::chrono::milliseconds clock_after)
+        : dds_(domain, rt::config_dir() / "dds" / "gdnav_profiles.xml", "gdnav.test.other") {
         rt::register_gdnav_topics();
         writer_ = dds_.writer(gdnav::topics::kStatus, rt::message_ops<gdnav::msg::ComponentStatus>(),
                               rt::kControlWriterProfile);
