@@ -14,9 +14,11 @@
 #include <vector>
 
 #include <fastdds/dds/core/condition/WaitSet.hpp>
+#include <spdlog/spdlog.h>
 
 #include "dds/dds_context.hpp"
 #include "dds/foreign_runs.hpp"
+#include "dds/socket_buffers.hpp"
 #include "framework/lockstep.hpp"
 #include "msgs/messages.hpp"
 #include "dds/security/security.hpp"
@@ -100,6 +102,11 @@ struct Clock::Impl {
         }
         dds = std::make_unique<DdsContext>(rc.domain_id, rc.dds_profile, "gdnav.clock", rc.security_dir,
                                            security::kClockIdentity);
+        // The clock speaks for the run: one line, not one per process.
+        if (const std::string s = receive_buffer_shortfall(udp_receive_buffer_asked(*dds->participant()),
+                                                           kernel_receive_buffer_cap());
+            !s.empty())
+            spdlog::warn("{}", s);
         tick_writer = dds->writer(topics::kTick, message_ops<msg::Tick>(), kControlWriterProfile);
         control_writer = dds->writer(topics::kRunControl, message_ops<msg::RunControl>(), kLatchedWriterProfile);
         status_writer = dds->writer(topics::kStatus, message_ops<msg::ComponentStatus>(), kControlWriterProfile);

@@ -6,9 +6,13 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
 
 #include "dds/dds_context.hpp"
+#include "dds/socket_buffers.hpp"
 #include "msgs/messages.hpp"
 #include "framework/run_config.hpp"
 
@@ -23,6 +27,9 @@ TEST(DdsProfile, DefaultProfileUsesUdpOnlyWithoutSharedMemory) {
     ASSERT_FALSE(pq.transport().user_transports.empty());
     for (const auto& t : pq.transport().user_transports)
         EXPECT_NE(dynamic_cast<eprosima::fastdds::rtps::UDPv4TransportDescriptor*>(t.get()), nullptr);
+    // 4 MiB receive buffers: a member without inputs (replay) writes a whole window of steps at once (docs/runtime.md
+    // "Socket receive buffers").
+    EXPECT_EQ(udp_receive_buffer_asked(*dds.participant()), 4u << 20);
 
     for (const char* profile : {kDataWriterProfile, kControlWriterProfile, kLatchedWriterProfile}) {
         SCOPED_TRACE(profile);
@@ -57,4 +64,31 @@ TEST(DdsProfile, DefaultProfileUsesUdpOnlyWithoutSharedMemory) {
     EXPECT_EQ(be->get_qos().data_sharing().kind(), DataSharingKind::OFF);
     DataReader* rel = dds.reader("gdnav_test_r/member", message_ops<gdnav::msg::Tick>(), kDataReaderProfile);
     EXPECT_EQ(rel->get_qos().reliability().kind, RELIABLE_RELIABILITY_QOS);
+}
+
+// The other UDP profiles ask for the same buffers.
+TEST(DdsProfile, UdpProfilesAskForFourMebibyteReceiveBuffers) {
+    for (const char* name : {"lossy_link.xml", "two_hosts_udp.xml"}) {
+        SCOPED_TRACE(name);
+        DdsContext dds(200 + static_cast<int>(getpid() % 30), config_dir() / "dds" / name,
+                       std::string("gdnav.test.") + name);
+        EXPECT_EQ(udp_receive_buffer_asked(*dds.participant()), 4u << 20);
+    }
+}
+
+// A kernel cap below the profile's buffers gives one line naming both figures and the sysctl; enough, or nothing to
+// compare, gives none.
+TEST(DdsProfile, AReceiveBufferCapBelowTheProfileIsNamedWithItsRemedy) {
+    const std::string s = receive_buffer_shortfall(4u << 20, 212992);
+    EXPECT_NE(s.find("capped at 212992 bytes"), std::string::npos) << s;
+    EXPECT_NE(s.find("asks for 4194304"), std::string::npos) << s;
+    EXPECT_NE(s.find("sysctl -w net.core.rmem_max=4194304"), std::string::npos) << s;
+    EXPECT_EQ(receive_buffer_shortfall(4u << 20, 4u << 20), "");
+    EXPECT_EQ(receive_buffer_shortfall(0, 212992), "");  // the profile asks for the system default
+    EXPECT_EQ(receive_buffer_shortfall(4u << 20, 0), "");  // cap unknown
+    const auto f = std::filesystem::temp_directory_path() / ("gdnav_rmem_" + std::to_string(getpid()));
+    std::ofstream(f) << "212992\n";
+    EXPECT_EQ(kernel_receive_buffer_cap(f), 212992u);
+    std::filesystem::remove(f);
+    EXPECT_EQ(kernel_receive_buffer_cap(f), 0u);
 }
