@@ -65,7 +65,8 @@ void AttitudeFilter::configure(const config::Config& tuning, const config::Confi
     t.init_mode = init.get_choice("mode", {"measurements", "alignment"}) == "alignment" ? InitMode::kAlignment
                                                                                          : InitMode::kMeasurements;
     const config::Config im = init.child("measurements");
-    t.init_sigmas.att_rad = im.get_angle_deg("att_sigma_deg", Range{0.0, 30.0});
+    t.init_sigmas.tilt_rad = im.get_angle_deg("tilt_sigma_deg", Range{0.0, 30.0});
+    t.init_sigmas.heading_rad = im.get_angle_deg("heading_sigma_deg", Range{0.0, 180.0});
     t.init_sigmas.gyr_bias_rps.setConstant(im.get_angle_deg("gyr_bias_sigma_dps", Range{0.0, 1.0e3}));
     t.init_sigmas.mag_bias_nT = im.get_vec3("mag_bias_sigma_nT", Range{0.0, kMaxSigma});
     t.init_sigmas.b_dev_nT = im.get_vec3("b_dev_sigma_nT", Range{0.0, kMaxSigma});
@@ -115,7 +116,8 @@ AttitudeEstimate AttitudeFilter::initialize(std::uint64_t k, double t_s, const I
         const Vec3 f_corr = imu.f_b_mps2 - imu.w_b_rps.cross(vtas_b);
         in.q_nb = coarse_attitude(f_corr, mag.b_b_nT, earth::magnetic_model_n(gnss.lon_rad, gnss.lat_rad));
         in.w_nb_b_rps = imu.w_b_rps - in.q_nb.conjugate() * earth::w_ie_n(gnss.lat_rad);
-        in.att_sigma_rad = s.att_rad;
+        in.att_sigma_rad = s.tilt_rad;
+        in.heading_sigma_rad = s.heading_rad;
         in.gyr_bias_sigma_rps = s.gyr_bias_rps;
         in.mag_bias_sigma_nT = s.mag_bias_nT;
         in.b_dev_sigma_nT = s.b_dev_nT;
@@ -133,7 +135,14 @@ AttitudeEstimate AttitudeFilter::initialize(std::uint64_t k, double t_s, const A
     x_.segment<3>(att::kEmag) = in.mag_bias_nT;
     x_.segment<3>(att::kBdev) = in.b_dev_n_nT;
     p_.setZero();
-    if (in.att_sigma_rad > 0.0) {
+    if (in.att_sigma_rad > 0.0 && in.heading_sigma_rad > 0.0) {
+        // NED-side sigmas, carried to the body-side angle error of Xi: dtheta_b = R^T dtheta_n.
+        const filters::Mat43 xi = filters::xi(x_.segment<4>(att::kQ));
+        const Eigen::Matrix3d r = qn.toRotationMatrix();
+        const Eigen::Vector3d var(in.att_sigma_rad * in.att_sigma_rad, in.att_sigma_rad * in.att_sigma_rad,
+                                  in.heading_sigma_rad * in.heading_sigma_rad);
+        p_.block<4, 4>(att::kQ, att::kQ) = 0.25 * xi * r.transpose() * var.asDiagonal() * r * xi.transpose();
+    } else if (in.att_sigma_rad > 0.0) {
         const filters::Mat43 xi = filters::xi(x_.segment<4>(att::kQ));
         p_.block<4, 4>(att::kQ, att::kQ) = 0.25 * in.att_sigma_rad * in.att_sigma_rad * xi * xi.transpose();
     } else {

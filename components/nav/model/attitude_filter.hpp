@@ -39,6 +39,9 @@ struct AttitudeInit {
     Vec3 mag_bias_nT{Vec3::Zero()};
     Vec3 b_dev_n_nT{Vec3::Zero()};
     double att_sigma_rad{0.0};  // if > 0: P_qq = (sigma^2/4) Xi(q) Xi(q)^T (isotropic angle error)
+    // If > 0 (with att_sigma_rad > 0): the angle error about D has this sigma and att_sigma_rad is the tilt's (about
+    // N and E): P_qq = (1/4) Xi(q) R^T diag(tilt^2, tilt^2, heading^2) R Xi(q)^T.
+    double heading_sigma_rad{0.0};
     double q_p0{0.0};           // else:   P_qq = q_p0 I4 (reference)
     Vec3 w_nb_sigma_rps{Vec3::Zero()};
     Vec3 gyr_bias_sigma_rps{Vec3::Zero()};

@@ -22,7 +22,8 @@ enum class InitMode { kMeasurements, kAlignment };
 
 // Truth-free mode 1-sigmas.
 struct MeasurementInitSigmas {
-    double att_rad{0.05};
+    double tilt_rad{0.026};     // about N and E: one-sample levelling (accelerometer bias / g and turbulence)
+    double heading_rad{0.087};  // about D: magnetic heading (hard iron, field model error, tilt through the dip)
     Vec3 gyr_bias_rps{Vec3::Constant(3.49e-3)};
     Vec3 acc_bias_mps2{Vec3::Constant(0.157)};
     Vec3 mag_bias_nT{Vec3::Constant(530.0)};

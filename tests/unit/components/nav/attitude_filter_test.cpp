@@ -162,6 +162,29 @@ TEST(NavAttitude, ConvergesFromLargeInitialAttitudeError) {
     EXPECT_LT(math::rad2deg(math::angle_between(f.estimate_q(), smp.truth.q_nb)), 0.2);
 }
 
+// Tilt and heading sigmas apart (the truth-free start): the filter's attitude covariance about N, E, D is exactly
+// diag(tilt^2, tilt^2, heading^2) at any attitude, in both formulations.
+TEST(NavAttitude, TiltAndHeadingInitialSigmasAreTheCovarianceAboutNedAxes) {
+    const config::Config tuning = config::Config::wrap(test::load_tuning_node(true)["attitude"], "tuning.yaml");
+    for (const char* formulation : {"additive", "error_state"}) {
+        SCOPED_TRACE(formulation);
+        const config::Config variant =
+            config::Config::parse(std::string("specific_force: baseline\nfilter: ") + formulation + "\n", "variant");
+        AttitudeFilter f;
+        f.configure(tuning, variant, rnd::Stream(46));
+        AttitudeInit in;
+        in.q_nb = math::quat_from_rotv(Eigen::Vector3d(0.3, -0.2, 2.1));  // banked, pitched, heading 120 deg
+        in.att_sigma_rad = math::deg2rad(1.5);
+        in.heading_sigma_rad = math::deg2rad(5.0);
+        in.w_nb_sigma_rps = Eigen::Vector3d::Constant(1e-3);
+        f.initialize(0, 0.0, in);
+        const Eigen::Matrix3d p = f.attitude_covariance_n();
+        const Eigen::Vector3d var(std::pow(math::deg2rad(1.5), 2), std::pow(math::deg2rad(1.5), 2),
+                                  std::pow(math::deg2rad(5.0), 2));
+        EXPECT_LT((p - Eigen::Matrix3d(var.asDiagonal())).cwiseAbs().maxCoeff(), 1e-12) << p;
+    }
+}
+
 TEST(NavAttitude, CoarseAlignmentIsExactOnNoiseFreeData) {
     rnd::Stream s(46);
     for (int i = 0; i < 20; ++i) {
