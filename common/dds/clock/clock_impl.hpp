@@ -45,6 +45,8 @@ struct Clock::Impl {
         std::string dead_reason;
         std::uint32_t faults_version{0};  // fault schedule the member has adopted
         std::string rejected;  // its latest heartbeat's count of rejected samples ("TOPIC:N:M,...", host_inbox.hpp)
+        std::uint64_t beat_step{0};  // the last completed step its latest heartbeat of this run named
+        bool beat_heard{false};
         // Not in the barrier and writes nothing (e.g. the live bridge): it cannot change the run's outputs.
         [[nodiscard]] bool observer() const { return free && outputs.empty(); }
     };

@@ -68,6 +68,10 @@ void Clock::Impl::read_status(double now) {
                 spdlog::info("member '{}' is free-running (not in the barrier; run not reproducible)", name);
         }
         if (status_in.kind() == msg::STATUS_READY && status_in.run_token() == token) m.ready = true;
+        if (status_in.kind() == msg::STATUS_HEARTBEAT && status_in.run_token() == token) {
+            m.beat_step = status_in.step();
+            m.beat_heard = true;
+        }
         if (const std::string text = status_in.message().to_string();
             (status_in.kind() == msg::STATUS_HEARTBEAT || status_in.kind() == msg::STATUS_READY) &&
             text.rfind("rejected ", 0) == 0)
@@ -173,7 +177,9 @@ std::uint64_t Clock::Impl::min_done() const {
 std::string Clock::Impl::waiting_for() const {
     std::string s;
     for (const Member* m : table)
-        if (!m->free && !m->dead && effective_done(*m) <= current) s += (s.empty() ? "" : ", ") + m->name;
+        if (!m->free && !m->dead && effective_done(*m) <= current)
+            s += (s.empty() ? "" : ", ") + m->name +
+                 (m->beat_heard ? " (its heartbeat: step " + std::to_string(m->beat_step) + ")" : "");
     return s;
 }
 

@@ -67,12 +67,14 @@ struct MemberRun {
     std::string run_log;
     std::string member_log;
 };
-MemberRun run_with_script_member(const std::string& script, int steps, const fs::path& out) {
+MemberRun run_with_script_member(const std::string& script, int steps, const fs::path& out,
+                                 const std::vector<std::string>& sets = {}) {
     const std::string domain = fresh_domain();
-    const pid_t launcher = start({GDNAV_GDNAV_EXE, "run", "--scenario", "paper2", "--seed", "1", "--layout",
+    std::vector<std::string> argv{GDNAV_GDNAV_EXE, "run", "--scenario", "paper2", "--seed", "1", "--layout",
                                   "distributed", "--external", "nav_att", "--domain", domain, "--steps",
-                                  std::to_string(steps), "--out", out.string()},
-                                 out.string() + ".run.log");
+                                  std::to_string(steps), "--out", out.string()};
+    for (const auto& s : sets) argv.insert(argv.end(), {"--set", s});
+    const pid_t launcher = start(argv, out.string() + ".run.log");
     const pid_t member = start(python(kDir + "/" + script, {"--domain", domain}), out.string() + ".member.log");
     MemberRun r;
     r.member_code = wait_for(member, 120.0);
@@ -114,6 +116,22 @@ TEST(PythonMember, ExceptionInTheStepCallbackEndsTheMemberNotTheRun) {
               std::string::npos)
         << run_log;
     EXPECT_EQ(run_log.find("exit code 130"), std::string::npos) << run_log;
+}
+
+TEST(PythonMember, AStallNamesTheStepOfEachMemberTheClockWaitsFor) {
+    // The same 3-s step with run.stall_timeout_s 1.5: the clock aborts, and its reason gives, for each member it
+    // waits for, the step its latest heartbeat named; nav_pos, which waits for nav_att's estimate of step 300, is
+    // at step 299.
+    const fs::path out = temp_dir("pystall");
+    const MemberRun r = run_with_script_member("slow_member.py", 1000, out,
+                                               {"run.stall_timeout_s=1.5", "run.member_timeout_s=10"});
+    EXPECT_EQ(r.run_code, 3) << r.run_log;
+    std::string last = r.run_log.substr(0, r.run_log.find_last_not_of('\n') + 1);
+    last = last.substr(last.rfind('\n') + 1);
+    EXPECT_NE(last.find("stalled at step"), std::string::npos) << r.run_log;
+    EXPECT_TRUE(std::regex_search(last, std::regex(R"(nav_att \(its heartbeat: step [0-9]+\))"))) << last;
+    EXPECT_NE(last.find("nav_pos (its heartbeat: step 299)"), std::string::npos) << last;
+    std::printf("%s\n", last.c_str());
 }
 
 TEST(PythonMember, AStepLongerThanTheMemberTimeoutIsNotADeadMember) {
