@@ -28,6 +28,8 @@ namespace {
 // The clock's summary and faults.yaml are written when Clock::run returns; what follows is DDS tear-down only, which
 // normally takes well under a second.
 constexpr double kClockTeardownDeadlineS = 10.0;
+// A member's tear-down bound: member_timeout_s plus this, below the launcher's member_timeout_s + 3 s.
+constexpr double kMemberTeardownMarginS = 1.0;
 
 struct RunArgs {
     std::string scenario{"default"};
@@ -193,7 +195,10 @@ CLI::App* add_component_command(CLI::App& app, CliContext& ctx, CommandRunner& r
         {
             DdsHost host(rc, std::move(members), ho);
             code = host.run();
-        }  // every component finished and destroyed: its files are complete
+            // Every component has finished (its files are complete); only the DDS tear-down is left. The launcher
+            // ends a member that outlives the clock by member_timeout_s + 3 s, so leave before that.
+            bound_teardown(code, rc.member_timeout_s + kMemberTeardownMarginS);
+        }  // every component destroyed
         exit_keeping_participants(code);
     };
     return sub;
