@@ -3,8 +3,9 @@
 // This test is such an outside reader (a monitoring tool that is not a member of the run): it must see the
 // composed run's ImuSample topic on DDS, step after step up to the last one, from the step at which the run's process
 // has matched it on (samples before the match are handed over in process only). The run is paced at 10x real time
-// (3 s) so that the match, which on a loaded machine took longer than a run at full speed, happens during the run. (That the in-process hand-over gives
-// the same results as the other layouts is the Layouts, Flight and ScheduledFaults tests' bit-identity check.)
+// (3 s) so that the match, which on a loaded machine took longer than a run at full speed, happens during the run.
+// (That the in-process hand-over gives the same results as the other layouts is the Layouts, Flight and
+// ScheduledFaults tests' bit-identity check.)
 #include <gtest/gtest.h>
 #include <unistd.h>
 
