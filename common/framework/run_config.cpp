@@ -128,7 +128,7 @@ void read_run_section(RunConfig& rc, const Config& run) {
         rc.info.steps = static_cast<std::uint64_t>(std::llround(d / rc.info.dt_s)) + 1;
     }
     rc.realtime = run.get_double("realtime", 0.0, Range{0.0, 1e6});
-    rc.member_timeout_s = run.get_double("member_timeout_s", 1.5, Range{0.2, 60.0});
+    rc.member_timeout_s = run.get_double("member_timeout_s", 1.5, Range{0.2, kMemberTimeoutMax_s});
     rc.startup_timeout_s = run.get_double("startup_timeout_s", 30.0, Range{1.0, 3600.0});
     rc.stall_timeout_s = run.get_double("stall_timeout_s", 60.0, Range{1.0, 86400.0});
     rc.window_steps = static_cast<std::uint64_t>(run.get_int("window_steps", 64, 0, 64));

@@ -66,6 +66,10 @@ struct MemberSpec {
     config::Config cfg;  // the component's section (its "type" key already read)
 };
 
+// The longest run.member_timeout_s accepted. The DDS profiles' participant lease is longer, so that DDS never drops a
+// silent participant before gdnav's own timeouts judge it (config/dds/gdnav_profiles.xml).
+inline constexpr double kMemberTimeoutMax_s = 60.0;
+
 class RunConfig {
 public:
     static RunConfig load(const std::filesystem::path& file, const RunOverrides& overrides = {});

@@ -62,12 +62,12 @@ struct Participant {
     std::map<std::string, Topic*> topics;
 
     explicit Participant(int domain) {
-        // §2.3: UDPv4 only, lease 3 s, announcement period 1 s; no XML profile is loaded.
+        // §2.3: UDPv4 only, lease 75 s, announcement period 1 s; no XML profile is loaded.
         DomainParticipantQos pq = PARTICIPANT_QOS_DEFAULT;
         pq.name("gdnav-raw-member");
         pq.transport().use_builtin_transports = false;
         pq.transport().user_transports.push_back(std::make_shared<eprosima::fastdds::rtps::UDPv4TransportDescriptor>());
-        pq.wire_protocol().builtin.discovery_config.leaseDuration = Duration_t(3, 0);
+        pq.wire_protocol().builtin.discovery_config.leaseDuration = Duration_t(75, 0);
         pq.wire_protocol().builtin.discovery_config.leaseDuration_announcementperiod = Duration_t(1, 0);
         dp = DomainParticipantFactory::get_instance()->create_participant(domain, pq);
         if (!dp) throw std::runtime_error("cannot create a participant on domain " + std::to_string(domain));

@@ -92,3 +92,19 @@ TEST(DdsProfile, AReceiveBufferCapBelowTheProfileIsNamedWithItsRemedy) {
     std::filesystem::remove(f);
     EXPECT_EQ(kernel_receive_buffer_cap(f), 0u);
 }
+
+// Every shipped profile's participant lease outlasts the longest member timeout: a participant silent for less than
+// run.member_timeout_s (a starved or paused process) must not be dropped by its peers' DDS, which unmatches its
+// endpoints and loses what was written meanwhile (docs/runtime.md, "Participant lease").
+TEST(DdsProfile, TheParticipantLeaseOutlastsTheLongestMemberTimeout) {
+    for (const char* name : {"gdnav_profiles.xml", "shm_profiles.xml", "lossy_link.xml", "two_hosts_udp.xml"}) {
+        SCOPED_TRACE(name);
+        DdsContext dds(200 + static_cast<int>(getpid() % 30), config_dir() / "dds" / name,
+                       std::string("gdnav.test.lease.") + name);
+        const auto& d = dds.participant()->get_qos().wire_protocol().builtin.discovery_config;
+        const double lease_s = d.leaseDuration.seconds + 1e-9 * d.leaseDuration.nanosec;
+        const double announce_s = d.leaseDuration_announcementperiod.seconds +
+                                  1e-9 * d.leaseDuration_announcementperiod.nanosec;
+        EXPECT_GT(lease_s, gdnav::runtime::kMemberTimeoutMax_s + 2.0 * announce_s) << lease_s << " s";
+    }
+}
