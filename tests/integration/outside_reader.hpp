@@ -6,15 +6,39 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <thread>
 
+#include <fastdds/dds/domain/DomainParticipant.hpp>
 #include <fastdds/dds/subscriber/DataReader.hpp>
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
+#include <fastdds/dds/subscriber/Subscriber.hpp>
+#include <fastdds/dds/subscriber/qos/DataReaderQos.hpp>
 
+#include "dds/dds_context.hpp"
 #include "process_util.hpp"
 #include "msgs/message_ops.hpp"
 
 namespace gdnav::testing {
+
+// A reader of `topic` with the data readers' QoS but a history that keeps `samples` samples (nullptr: not created).
+// A reader outside the lockstep may not be scheduled for longer than the profile's 72 samples take to arrive on a
+// loaded machine: its receive thread then replaces samples that the test has not taken yet. The run's writers never
+// wait for it, so what it must keep is its own affair.
+inline eprosima::fastdds::dds::DataReader* whole_run_reader(runtime::DdsContext& dds, const std::string& topic,
+                                                            const runtime::MessageOps& ops, std::int32_t samples) {
+    using namespace eprosima::fastdds::dds;
+    (void)dds.reader(topic, ops, runtime::kDataReaderProfile);  // registers the type and creates the topic
+    Subscriber* subscriber = dds.participant()->create_subscriber(SUBSCRIBER_QOS_DEFAULT);
+    DataReaderQos q;
+    if (!subscriber || subscriber->get_datareader_qos_from_profile(runtime::kDataReaderProfile, q) !=
+                           eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK)
+        return nullptr;
+    q.history().depth = samples;
+    q.resource_limits().max_samples = samples;
+    q.resource_limits().max_samples_per_instance = samples;
+    return subscriber->create_datareader(dds.participant()->lookup_topicdescription(topic), q);
+}
 
 // Calls on_sample(the sample, of ops' type) for each sample; returns the launcher's exit code (-1: still running
 // after timeout_s plus 5 s).

@@ -24,6 +24,7 @@
 #include <fastdds/dds/subscriber/qos/DataReaderQos.hpp>
 #include <fastdds/dds/domain/DomainParticipant.hpp>
 
+#include "outside_reader.hpp"
 #include "process_util.hpp"
 #include "dds/dds_context.hpp"
 #include "msgs/messages.hpp"
@@ -87,22 +88,10 @@ TEST(Mirror, TheLiveBridgeReadsOnlyMirrorsAndAMirrorIsEveryTenthStepOfItsTopicBi
     Discovered discovered;  // outlives the participant
     rt::DdsContext dds(kDomain, rt::config_dir() / "dds" / "gdnav_profiles.xml", "gdnav.test.mirror");
     ASSERT_EQ(dds.participant()->set_listener(&discovered), eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK);
-    // The test reads outside the lockstep: on a loaded machine it may not come round for longer than the data
-    // readers' history (72 steps), so its readers keep the whole run (the run's writers never wait for them).
-    for (const std::string& t : {rt::mirror_topic(gdnav::topics::kImu), std::string(gdnav::topics::kImu)})
-        (void)dds.reader(t, *ops, rt::kDataReaderProfile);  // registers the type and creates the topic
-    Subscriber* subscriber = dds.participant()->create_subscriber(SUBSCRIBER_QOS_DEFAULT);
-    ASSERT_NE(subscriber, nullptr);
-    DataReaderQos whole_run;
-    ASSERT_EQ(subscriber->get_datareader_qos_from_profile(rt::kDataReaderProfile, whole_run),
-              eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK);
-    whole_run.history().depth = static_cast<std::int32_t>(kSteps) + 16;
-    whole_run.resource_limits().max_samples = whole_run.history().depth;
-    whole_run.resource_limits().max_samples_per_instance = whole_run.history().depth;
-    DataReader* mirror = subscriber->create_datareader(
-        dds.participant()->lookup_topicdescription(rt::mirror_topic(gdnav::topics::kImu)), whole_run);
-    DataReader* topic =
-        subscriber->create_datareader(dds.participant()->lookup_topicdescription(gdnav::topics::kImu), whole_run);
+    // The test reads outside the lockstep, so its readers keep the whole run (outside_reader.hpp).
+    const auto depth = static_cast<std::int32_t>(kSteps) + 16;
+    DataReader* mirror = whole_run_reader(dds, rt::mirror_topic(gdnav::topics::kImu), *ops, depth);
+    DataReader* topic = whole_run_reader(dds, gdnav::topics::kImu, *ops, depth);
     ASSERT_NE(mirror, nullptr);
     ASSERT_NE(topic, nullptr);
 
