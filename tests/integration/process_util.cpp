@@ -103,6 +103,15 @@ bool alive(pid_t pid) {
     return !(p != std::string::npos && p + 2 < s.size() && s[p + 2] == 'Z');
 }
 
+bool wait_for_log(pid_t pid, const fs::path& log, const std::string& text, double timeout_s) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+    while (read_file(log).find(text) == std::string::npos) {
+        if (!alive(pid) || std::chrono::steady_clock::now() > deadline) return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return true;
+}
+
 std::string read_file(const fs::path& p) {
     std::ifstream f(p);
     std::stringstream ss;

@@ -37,6 +37,8 @@ PairResult run_pair(const std::vector<std::string>& run_argv, const std::vector<
                     const std::filesystem::path& log_base, double timeout_s);
 
 bool alive(pid_t pid);
+// Waits until the file `log` contains `text`; false when `pid` is no longer alive or after timeout_s.
+bool wait_for_log(pid_t pid, const std::filesystem::path& log, const std::string& text, double timeout_s);
 std::string read_file(const std::filesystem::path& p);
 std::map<std::string, pid_t> read_processes(const std::filesystem::path& out_dir);
 // topic -> digest of <out>/record/digest.yaml (empty when missing).

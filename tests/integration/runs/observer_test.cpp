@@ -54,12 +54,7 @@ TEST(Observer, APausedLiveBridgeDoesNotHoldADistributedRun) {
                                  "run.member_timeout_s=20", "--out", out.string()},
                                 log);
     // The run has started (the clock's line), then the bridge is paused for 2 s.
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-    while (read_file(log).find("all members ready") == std::string::npos) {
-        ASSERT_TRUE(alive(run_pid)) << read_file(log);
-        ASSERT_LT(std::chrono::steady_clock::now(), deadline) << read_file(log);
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
+    ASSERT_TRUE(wait_for_log(run_pid, log, "all members ready", 120.0)) << read_file(log);
     const auto procs = read_processes(out);
     ASSERT_TRUE(procs.count("live")) << read_file(log);
     std::this_thread::sleep_for(std::chrono::milliseconds(500));

@@ -39,12 +39,7 @@ TEST(PausedMember, AMemberPausedForFiveSecondsWithinItsTimeoutIsWaitedForNotLost
     const fs::path out = temp_dir("paused");
     const fs::path log = out.parent_path() / (out.filename().string() + ".log");
     const pid_t run_pid = start(run_argv(out, domain_of_this_test()), log);
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-    while (read_file(log).find("all members ready") == std::string::npos) {
-        ASSERT_TRUE(alive(run_pid)) << read_file(log);
-        ASSERT_LT(std::chrono::steady_clock::now(), deadline) << read_file(log);
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
+    ASSERT_TRUE(wait_for_log(run_pid, log, "all members ready", 120.0)) << read_file(log);
     const auto procs = read_processes(out);
     ASSERT_TRUE(procs.count("nav_att")) << read_file(log);
     std::this_thread::sleep_for(std::chrono::seconds(1));
