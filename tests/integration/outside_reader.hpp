@@ -28,11 +28,13 @@ namespace gdnav::testing {
 inline eprosima::fastdds::dds::DataReader* whole_run_reader(runtime::DdsContext& dds, const std::string& topic,
                                                             const runtime::MessageOps& ops, std::int32_t samples) {
     using namespace eprosima::fastdds::dds;
-    (void)dds.reader(topic, ops, runtime::kDataReaderProfile);  // registers the type and creates the topic
-    Subscriber* subscriber = dds.participant()->create_subscriber(SUBSCRIBER_QOS_DEFAULT);
+    // The context's reader registers the type and creates the topic; it is then replaced by the deep one.
+    DataReader* shallow = dds.reader(topic, ops, runtime::kDataReaderProfile);
+    auto* subscriber = const_cast<Subscriber*>(shallow->get_subscriber());
     DataReaderQos q;
-    if (!subscriber || subscriber->get_datareader_qos_from_profile(runtime::kDataReaderProfile, q) !=
-                           eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK)
+    if (subscriber->get_datareader_qos_from_profile(runtime::kDataReaderProfile, q) !=
+            eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK ||
+        subscriber->delete_datareader(shallow) != eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK)
         return nullptr;
     q.history().depth = samples;
     q.resource_limits().max_samples = samples;

@@ -70,9 +70,10 @@ struct MemberRun {
 MemberRun run_with_script_member(const std::string& script, int steps, const fs::path& out,
                                  const std::vector<std::string>& sets = {}) {
     const std::string domain = fresh_domain();
-    std::vector<std::string> argv{GDNAV_GDNAV_EXE, "run", "--scenario", "paper2", "--seed", "1", "--layout",
-                                  "distributed", "--external", "nav_att", "--domain", domain, "--steps",
-                                  std::to_string(steps), "--out", out.string()};
+    std::vector<std::string> argv{GDNAV_GDNAV_EXE, "run",     "--scenario", "paper2", "--seed",
+                                  "1",             "--layout", "distributed", "--external", "nav_att",
+                                  "--domain",      domain,     "--steps",    std::to_string(steps), "--out",
+                                  out.string()};
     for (const auto& s : sets) argv.insert(argv.end(), {"--set", s});
     const pid_t launcher = start(argv, out.string() + ".run.log");
     const pid_t member = start(python(kDir + "/" + script, {"--domain", domain}), out.string() + ".member.log");

@@ -53,7 +53,7 @@ TEST(Observer, APausedLiveBridgeDoesNotHoldADistributedRun) {
                                  std::to_string(kSteps), "--layout", "distributed", "--live", std::to_string(port), "--set",
                                  "run.member_timeout_s=20", "--out", out.string()},
                                 log);
-    // The run has started (the clock's line), then the bridge is paused for 2 s.
+    // The run has started (the clock's line); the bridge is paused below, until the clock has ended.
     ASSERT_TRUE(wait_for_log(run_pid, log, "all members ready", 120.0)) << read_file(log);
     const auto procs = read_processes(out);
     ASSERT_TRUE(procs.count("live")) << read_file(log);
@@ -93,8 +93,8 @@ TEST(Observer, APausedLiveBridgeDoesNotHoldADistributedRun) {
     // On an over-committed machine the bridge, at nice 19, may still be behind when the run ends: those steps are
     // counted apart, and the run did not wait for them either.
     const long unreached = m[5].matched ? std::stol(m[5]) : 0;
-    std::printf("observer 'live' paused until the clock ended: computed %ld of %ld steps, skipped %ld, not reached %ld\n", computed,
-                total, skipped, unreached);
+    std::printf("observer 'live' paused until the clock ended: computed %ld of %ld steps, skipped %ld, not reached %ld\n",
+                computed, total, skipped, unreached);
     EXPECT_EQ(total, kSteps);
     EXPECT_EQ(computed + skipped + unreached, kSteps);
     EXPECT_GT(computed, 0);
