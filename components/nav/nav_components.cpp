@@ -13,6 +13,7 @@
 #include "model/air_data_filter.hpp"
 #include "model/alignment_monitor.hpp"
 #include "model/attitude_filter.hpp"
+#include "model/in_flight_aligner.hpp"
 #include "model/position_filter.hpp"
 #include "model/yaw_gsf.hpp"
 #include "nav_convert.hpp"
@@ -146,6 +147,26 @@ struct GnssYaw {
     double fuse_accel_min_mps2{0.0};
 };
 
+// The in-flight fine alignment (`in_flight_alignment: {...}`, in_flight_aligner.hpp) in nav_att and nav_pos: both
+// run the same aligner on the same samples, so both hand over at the same step; only after a truth-free start.
+std::optional<InFlightAligner> configure_aligner(const config::Config& cfg, InitMode mode, double dt_s) {
+    const auto c = cfg.optional_child("in_flight_alignment");
+    if (!c) return std::nullopt;
+    if (mode != InitMode::kMeasurements)
+        cfg.fail("in_flight_alignment", "needs init_mode: measurements (it replaces the sensors' published alignment)");
+    return InFlightAligner(parse_in_flight_alignment(*c), dt_s);
+}
+
+bool step_aligner(InFlightAligner& a, double t_s, const Input<msg::ImuSample>& imu, const Input<msg::MagSample>& mag,
+                  const Input<msg::GnssSample>& gnss, const Input<msg::AirDataEstimate>& air) {
+    if (!imu.available() || !mag.available() || !air.available()) return false;
+    GnssSample fix;  // fix_valid false unless a sample is there
+    if (gnss.available()) fix = from_msg(gnss.get());
+    const AirDataEstimate e = from_msg(air.get());
+    return step_in_flight_aligner(a, t_s, from_msg(imu.get()), from_msg(mag.get()), fix,
+                                  AirSample{e.tas_mps, e.aoa_rad, e.aos_rad});
+}
+
 class NavAtt final : public VariantFilterComponent<AttitudeFilter, kAttitudeSection> {
 public:
     using VariantFilterComponent::VariantFilterComponent;
@@ -159,13 +180,39 @@ public:
             yaw_->fuse_accel_min_mps2 = c->get_double("fuse_accel_min_mps2", config::Range{0.0, 20.0});
             c->finish();
         }
+        aligner_ = configure_aligner(cfg, filter_.tuning().init_mode, run.dt_s);
+        if (aligner_ && yaw_)
+            cfg.fail("yaw_from_gnss", "not with in_flight_alignment (the aligner has the GNSS heading itself)");
     }
     void step(const runtime::StepContext& ctx) override {
+        if (aligner_ && !aligner_->handed_over()) {
+            step_aligned_start(ctx);
+            return;
+        }
         step_filter(ctx);
         if (yaw_ && filter_.initialized()) step_yaw();
     }
 
 private:
+    // Until the hand-over nav_att publishes the aligner's attitude (the attitude filter does not run); at the
+    // hand-over the attitude filter starts from the aligner's alignment, as from the sensors' published one.
+    void step_aligned_start(const runtime::StepContext& ctx) {
+        const bool hand_over = step_aligner(*aligner_, ctx.t_s, imu_, mag_, gnss_, air_);
+        if (!aligner_->started()) return;
+        AttitudeEstimate e;
+        if (hand_over) {
+            e = filter_.realign(ctx.k, ctx.t_s, from_msg(imu_.get()), aligner_->alignment());
+            publish_status(fmt::format("in-flight alignment at t = {:.2f} s (tilt sigma {:.3f} deg, heading sigma "
+                                       "{:.3f} deg): the attitude filter starts from it",
+                                       ctx.t_s, math::rad2deg(aligner_->tilt_sigma_rad()),
+                                       math::rad2deg(aligner_->heading_sigma_rad())));
+        } else {
+            e = aligner_->estimate(ctx.k, ctx.t_s);
+        }
+        to_msg(e, out_.value());
+        out_est_ = e;
+    }
+
     void step_yaw() {
         const bool fix = gnss_.available() && gnss_.get().fix_valid();
         YawGsf& g = yaw_->gsf;
@@ -223,6 +270,7 @@ private:
     PositionEstimate last_pos_;
     AttitudeEstimate out_est_;
     std::optional<GnssYaw> yaw_;
+    std::optional<InFlightAligner> aligner_;
 };
 
 // ------------------------------------------------------------------------------------------------ nav_pos
@@ -231,18 +279,57 @@ public:
     using VariantFilterComponent::VariantFilterComponent;
     void configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream& stream) override {
         VariantFilterComponent::configure(cfg, run, stream);
-        if (auto c = cfg.optional_child("alignment_check")) {  // only then is there an alignment topic
-            monitor_.emplace(parse_alignment_criteria(*c), run.dt_s);
+        if (auto c = cfg.optional_child("alignment_check")) monitor_.emplace(parse_alignment_criteria(*c), run.dt_s);
+        aligner_ = configure_aligner(cfg, filter_.tuning().init_mode, run.dt_s);
+        if (aligner_) mag_ = std::make_unique<Input<msg::MagSample>>(*this, topics::kMag);
+        if (monitor_ || aligner_)  // only then is there an alignment topic
             align_out_ = std::make_unique<Output<msg::NavAlignment>>(*this, topics::kAlignment);
-        }
     }
     void step(const runtime::StepContext& ctx) override {
+        const bool hand_over = aligner_ && step_aligner(*aligner_, ctx.t_s, imu_, *mag_, gnss_, air_);
         const std::uint64_t accepted_before = filter_.gate_accepted();
         step_filter(ctx);
+        if (hand_over && filter_.initialized()) realign(ctx);
         if (monitor_ && filter_.initialized() && att_.available()) step_monitor(ctx, accepted_before);
+        if (aligner_) publish_aligner_flag(ctx, hand_over);
     }
 
 private:
+    // The position filter starts again with the in-flight alignment's E_acc (the attitude filter has just started
+    // again from its attitude; the hand-over step always has a fix).
+    void realign(const runtime::StepContext& ctx) {
+        const bool ok = gnss_.available() && att_.available() && gnss_.get().fix_valid() &&
+                        checks::gnss_fix_ok(from_msg(gnss_.get())) && checks::air_estimate_ok(from_msg(air_.get())) &&
+                        checks::attitude_estimate_ok(from_msg(att_.get()));
+        if (!ok) {
+            publish_status("in-flight alignment: the position filter keeps its own E_acc (no good fix, air data or "
+                           "attitude sample at the hand-over)");
+            return;
+        }
+        const GnssSample gnss = from_msg(gnss_.get());
+        const ImuSample imu = from_msg(imu_.get());
+        const AirDataEstimate air = from_msg(air_.get());
+        const AttitudeEstimate att = from_msg(att_.get());
+        const Alignment al = aligner_->alignment();
+        const PositionEstimate e =
+            filter_.initialize(ctx.k, ctx.t_s, imu, gnss, air, att, al.acc_err_mps2, al.acc_err_sigma_mps2);
+        to_msg(e, out_.value());
+    }
+    // With the in-flight alignment the aligned flag is its hand-over, and the sigmas are its own.
+    void publish_aligner_flag(const runtime::StepContext& ctx, bool hand_over) {
+        if (hand_over)
+            publish_status(fmt::format("aligned at t = {:.2f} s (in-flight alignment: tilt sigma {:.3f} deg, heading "
+                                       "sigma {:.3f} deg)",
+                                       ctx.t_s, math::rad2deg(aligner_->tilt_sigma_rad()),
+                                       math::rad2deg(aligner_->heading_sigma_rad())));
+        auto& o = align_out_->value();
+        o.aligned(aligner_->handed_over());
+        o.t_aligned_s(aligner_->handed_over() ? aligner_->t_handed_over_s() : 0.0);
+        o.tilt_sigma_rad(aligner_->started() ? aligner_->tilt_sigma_rad() : 0.0);
+        o.yaw_sigma_rad(aligner_->started() ? aligner_->heading_sigma_rad() : 0.0);
+        if (!monitor_) o.gnss_nis_mean(0.0);
+    }
+
     void step_monitor(const runtime::StepContext& ctx, std::uint64_t accepted_before) {
         const msg::AttitudeEstimate& att = att_.get();
         if (!monitor_->started()) {
@@ -255,7 +342,7 @@ private:
         monitor_->step(ctx.t_s, runtime::to_vec3(imu_.get().f_b_mps2()), runtime::to_quat(att.q_nb()),
                        att.att_sigma_rad()[2], filter_.gate_accepted() > accepted_before ? &d2 : nullptr,
                        filter_.gnss_denied());
-        if (monitor_->aligned() && !was_aligned)
+        if (monitor_->aligned() && !was_aligned && !aligner_)  // else the aligner's hand-over is the event
             publish_status(fmt::format("aligned at t = {:.2f} s: tilt sigma {:.3f} deg, yaw sigma {:.3f} deg, mean "
                                        "GNSS d2 {:.2f}",
                                        ctx.t_s, math::rad2deg(monitor_->tilt_sigma_rad()),
@@ -350,6 +437,8 @@ private:
     double t_gate_status_s_{-std::numeric_limits<double>::infinity()};
     double t_lost_s_{0.0};
     std::optional<AlignmentMonitor> monitor_;
+    std::optional<InFlightAligner> aligner_;
+    std::unique_ptr<Input<msg::MagSample>> mag_;  // the aligner's only
     std::unique_ptr<Output<msg::NavAlignment>> align_out_;
 
     Input<msg::ImuSample> imu_{*this, topics::kImu};

@@ -96,19 +96,7 @@ AttitudeEstimate AttitudeFilter::initialize(std::uint64_t k, double t_s, const I
     if (tun_.init_mode == InitMode::kAlignment) {
         if (align == nullptr || !align->valid())
             throw std::invalid_argument("attitude init.mode alignment needs the alignment published by the sensors");
-        in.q_nb = align->q_nb.normalized();
-        in.gyr_bias_rps = align->gyr_err_rps;
-        in.mag_bias_nT = align->mag_err_nT;
-        in.b_dev_n_nT = align->b_dev_n_nT;
-        if (tun_.align_q_p0 > 0.0) {
-            in.q_p0 = tun_.align_q_p0;  // the reference's fixed (overconfident) P0
-        } else {
-            in.att_sigma_rad = align->att_sigma_rad;
-        }
-        in.gyr_bias_sigma_rps = align->gyr_err_sigma_rps;
-        in.mag_bias_sigma_nT = align->mag_err_sigma_nT;
-        in.b_dev_sigma_nT = align->b_dev_sigma_nT;
-        in.w_nb_b_rps = imu.w_b_rps - in.gyr_bias_rps;  // Earth and transport rates ignored, as the reference
+        in = init_from_alignment(imu, *align);
     } else {
         if (!gnss.fix_valid) throw std::invalid_argument("attitude init.mode measurements needs a valid GNSS fix");
         const MeasurementInitSigmas& s = tun_.init_sigmas;
@@ -122,6 +110,32 @@ AttitudeEstimate AttitudeFilter::initialize(std::uint64_t k, double t_s, const I
         in.mag_bias_sigma_nT = s.mag_bias_nT;
         in.b_dev_sigma_nT = s.b_dev_nT;
     }
+    in.w_nb_sigma_rps = (in.gyr_bias_sigma_rps.array().square() + tun_.gyr_noise_var).sqrt();
+    return initialize(k, t_s, in);
+}
+
+AttitudeInit AttitudeFilter::init_from_alignment(const ImuSample& imu, const Alignment& align) const {
+    AttitudeInit in;
+    in.q_nb = align.q_nb.normalized();
+    in.gyr_bias_rps = align.gyr_err_rps;
+    in.mag_bias_nT = align.mag_err_nT;
+    in.b_dev_n_nT = align.b_dev_n_nT;
+    if (tun_.align_q_p0 > 0.0) {
+        in.q_p0 = tun_.align_q_p0;  // the reference's fixed (overconfident) P0
+    } else {
+        in.att_sigma_rad = align.att_sigma_rad;
+    }
+    in.gyr_bias_sigma_rps = align.gyr_err_sigma_rps;
+    in.mag_bias_sigma_nT = align.mag_err_sigma_nT;
+    in.b_dev_sigma_nT = align.b_dev_sigma_nT;
+    in.w_nb_b_rps = imu.w_b_rps - in.gyr_bias_rps;  // Earth and transport rates ignored, as the reference
+    return in;
+}
+
+AttitudeEstimate AttitudeFilter::realign(std::uint64_t k, double t_s, const ImuSample& imu, const Alignment& align) {
+    if (!align.valid()) throw std::invalid_argument("AttitudeFilter::realign: no alignment");
+    if (!checks::imu_ok(imu)) throw std::invalid_argument("AttitudeFilter::realign: non-finite or out-of-range IMU sample");
+    AttitudeInit in = init_from_alignment(imu, align);
     in.w_nb_sigma_rps = (in.gyr_bias_sigma_rps.array().square() + tun_.gyr_noise_var).sqrt();
     return initialize(k, t_s, in);
 }

@@ -80,6 +80,9 @@ public:
                                 const AirDataEstimate& air, const GnssSample& gnss,
                                 const Alignment* align = nullptr);
     AttitudeEstimate initialize(std::uint64_t k, double t_s, const AttitudeInit& init);
+    // Starts again from an alignment made in flight (in_flight_aligner.hpp), as `init.mode: alignment` starts from
+    // the sensors' published one: the same P0 policy (align_q_p0, else the alignment's sigma).
+    AttitudeEstimate realign(std::uint64_t k, double t_s, const ImuSample& imu, const Alignment& align);
 
 
     AttitudeEstimate step(std::uint64_t k, double t_s, const ImuSample& imu, const MagSample& mag,
@@ -113,6 +116,7 @@ private:
     AttitudeEstimate output(std::uint64_t k, double t_s) const;
     void normalise_quaternion();
     void step_error_state(bool imu_good, bool mag_good, const att::MeasVec& y, const att::PnVector& pn);
+    [[nodiscard]] AttitudeInit init_from_alignment(const ImuSample& imu, const Alignment& align) const;
 
     Tuning tun_;
     rnd::Stream stream_;

@@ -21,7 +21,7 @@ double Hp_from_H(double hg, double dt, double dp) {
 }
 
 Generator::Generator(const Scenario& sc, rnd::Stream stream)
-    : sc_(sc), stream_(stream), lon_(sc.lon0_rad), lat_(sc.lat0_rad), h_(sc.h0_m) {}
+    : sc_(sc), stream_(stream), lon_(sc.lon0_rad), lat_(sc.lat0_rad), h_(sc.h0_m), yaw_(sc.yaw0_rad) {}
 
 Alignment Generator::alignment(rnd::Stream stream, bool exact) const {
     sensors::AlignmentErrors e;
@@ -48,11 +48,28 @@ Sample Generator::next() {
     const double t = sc_.t0_s + static_cast<double>(k_) * sc_.dt_s;
     Truth& tr = s.truth;
     tr.t_s = t;
-    const double yaw = sc_.yaw0_rad + sc_.yaw_rate_rps * (t - sc_.t0_s);
-    const double th = sc_.pitch_rad, ph = sc_.bank_rad, r = sc_.yaw_rate_rps;
+    double yaw = sc_.yaw0_rad + sc_.yaw_rate_rps * (t - sc_.t0_s);
+    double ph = sc_.bank_rad, r = sc_.yaw_rate_rps, ph_dot = 0.0;
+    if (std::isfinite(sc_.reverse_turn_at_s)) {
+        // Bank b cos(pi s / T) over the roll (s = t - t_rev in [0, T]), coordinated yaw rate r0 tan(bank) / tan(b);
+        // the yaw is integrated step by step (forward Euler on that rate).
+        const double s_rev = t - sc_.reverse_turn_at_s;
+        if (s_rev >= sc_.reverse_roll_s) {
+            ph = -ph;
+        } else if (s_rev >= 0.0) {
+            const double a = math::kPi / sc_.reverse_roll_s;
+            ph = sc_.bank_rad * std::cos(a * s_rev);
+            ph_dot = -sc_.bank_rad * a * std::sin(a * s_rev);
+        }
+        r = sc_.bank_rad != 0.0 ? sc_.yaw_rate_rps * std::tan(ph) / std::tan(sc_.bank_rad) : sc_.yaw_rate_rps;
+        yaw = yaw_;
+        yaw_ += sc_.dt_s * r;
+    }
+    const double th = sc_.pitch_rad;
     tr.q_nb = math::quat_from_euler({yaw, th, ph});
     const Eigen::Matrix3d rnb = tr.q_nb.toRotationMatrix();
-    tr.w_nb_b_rps = r * Vec3(-std::sin(th), std::sin(ph) * std::cos(th), std::cos(ph) * std::cos(th));
+    tr.w_nb_b_rps = r * Vec3(-std::sin(th), std::sin(ph) * std::cos(th), std::cos(ph) * std::cos(th)) +
+                    Vec3(ph_dot, 0.0, 0.0);
     const Vec3 vtas_b = math::vtas_body(sc_.tas_mps, sc_.aoa_rad, sc_.aos_rad);
     tr.v_n_mps = sc_.wind_n_mps + rnb * vtas_b;
     tr.lon_rad = lon_;

@@ -10,6 +10,7 @@
 //   GNSS every `gnss_period_steps` steps: position (m-level noise) and velocity with white noise.
 // Position is integrated with forward Euler at the step rate; the truth is whatever the generator integrates.
 #include <cstdint>
+#include <limits>
 
 #include "nav_init.hpp"
 #include "nav_types.hpp"
@@ -25,6 +26,11 @@ struct Scenario {
     double h0_m{3000.0};
     double yaw0_rad{0.5};
     double yaw_rate_rps{0.0};
+    // If finite: from this time on the bank rolls to its opposite over reverse_roll_s (coordinated, the turn the
+    // other way). Kinematically exact only with aoa_rad = aos_rad = 0 (v_tas_b on the roll axis, so the roll does not
+    // move the velocity); the yaw is then integrated step by step.
+    double reverse_turn_at_s{std::numeric_limits<double>::infinity()};
+    double reverse_roll_s{3.0};
     double pitch_rad{0.03};
     double bank_rad{0.0};
     double tas_mps{30.0};
@@ -84,6 +90,7 @@ private:
     rnd::Stream stream_;
     std::uint64_t k_{0};
     double lon_{0.0}, lat_{0.0}, h_{0.0};
+    double yaw_{0.0};  // integrated yaw, used only with a turn reversal
 };
 
 // Pressure altitude whose INSA geopotential altitude (with dT, dp) equals H (Newton on H_from_Hp).

@@ -1,0 +1,226 @@
+// `in_flight_alignment` keys (all optional, any other key is an error; ranges and defaults):
+//   start: tilt_sigma_deg [0.1, 30] (1.5), heading_sigma_deg [0.5, 60] (10), gyr_bias_sigma_dps [1e-4, 5] (0.2),
+//          acc_bias_sigma_mps2 [1e-4, 5] (0.157), mag_bias_sigma_nT [1, 1e4] (530), b_dev_sigma_nT [1, 1e4] (200)
+//   noise: gyr_noise_dps_rts [1e-5, 1] (4.3e-3), acc_noise_mps2_rts [1e-5, 1] (5e-4),
+//          gyr_bias_walk_dps_s_rts [0, 1e-1] (2.84e-4), acc_bias_walk_mps2_s_rts [0, 1e-1] (1.4e-4),
+//          mag_walk_nT_rts [0, 100] (0.1), mag_noise_nT [0.1, 1e4] (50), mag_period_steps [1, 1000] (10),
+//          gnss_hor_sigma_m [0.1, 100] (8), gnss_ver_sigma_m [0.1, 100] (12), gnss_vel_sigma_mps [0.01, 10] (0.075)
+//   hand-over: tilt_sigma_max_deg [0.001, 10] (0.05), heading_sigma_max_deg [0.001, 10] (0.05), hold_s [0, 600] (10)
+#include "in_flight_aligner.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "input_checks.hpp"
+#include "nav_earth.hpp"
+#include "nav_init.hpp"
+
+namespace gdnav::nav {
+
+using config::Range;
+
+namespace {
+constexpr int kPhi = 0, kV = 3, kP = 6, kBg = 9, kBa = 12, kEm = 15, kBd = 18;
+using Mat3 = Eigen::Matrix3d;
+
+double deg_key(const config::Config& c, const char* key, double fallback_rad, Range deg) {
+    return math::deg2rad(c.get_double(key, math::rad2deg(fallback_rad), deg));
+}
+}  // namespace
+
+InFlightAlignerSettings parse_in_flight_alignment(const config::Config& c) {
+    InFlightAlignerSettings s;
+    s.tilt_sigma_rad = deg_key(c, "tilt_sigma_deg", s.tilt_sigma_rad, Range{0.1, 30.0});
+    s.heading_sigma_rad = deg_key(c, "heading_sigma_deg", s.heading_sigma_rad, Range{0.5, 60.0});
+    s.gyr_bias_sigma_rps = deg_key(c, "gyr_bias_sigma_dps", s.gyr_bias_sigma_rps, Range{1e-4, 5.0});
+    s.acc_bias_sigma_mps2 = c.get_double("acc_bias_sigma_mps2", s.acc_bias_sigma_mps2, Range{1e-4, 5.0});
+    s.mag_bias_sigma_nT = c.get_double("mag_bias_sigma_nT", s.mag_bias_sigma_nT, Range{1.0, 1e4});
+    s.b_dev_sigma_nT = c.get_double("b_dev_sigma_nT", s.b_dev_sigma_nT, Range{1.0, 1e4});
+    s.gyr_noise_rps_rts = deg_key(c, "gyr_noise_dps_rts", s.gyr_noise_rps_rts, Range{1e-5, 1.0});
+    s.acc_noise_mps2_rts = c.get_double("acc_noise_mps2_rts", s.acc_noise_mps2_rts, Range{1e-5, 1.0});
+    s.gyr_bias_walk_rps_s_rts = deg_key(c, "gyr_bias_walk_dps_s_rts", s.gyr_bias_walk_rps_s_rts, Range{0.0, 0.1});
+    s.acc_bias_walk_mps2_s_rts = c.get_double("acc_bias_walk_mps2_s_rts", s.acc_bias_walk_mps2_s_rts, Range{0.0, 0.1});
+    s.mag_walk_nT_rts = c.get_double("mag_walk_nT_rts", s.mag_walk_nT_rts, Range{0.0, 100.0});
+    s.mag_noise_nT = c.get_double("mag_noise_nT", s.mag_noise_nT, Range{0.1, 1e4});
+    s.mag_period_steps = static_cast<int>(c.get_int("mag_period_steps", s.mag_period_steps, 1, 1000));
+    s.gnss_hor_sigma_m = c.get_double("gnss_hor_sigma_m", s.gnss_hor_sigma_m, Range{0.1, 100.0});
+    s.gnss_ver_sigma_m = c.get_double("gnss_ver_sigma_m", s.gnss_ver_sigma_m, Range{0.1, 100.0});
+    s.gnss_vel_sigma_mps = c.get_double("gnss_vel_sigma_mps", s.gnss_vel_sigma_mps, Range{0.01, 10.0});
+    s.tilt_sigma_max_rad = deg_key(c, "tilt_sigma_max_deg", s.tilt_sigma_max_rad, Range{0.001, 10.0});
+    s.heading_sigma_max_rad = deg_key(c, "heading_sigma_max_deg", s.heading_sigma_max_rad, Range{0.001, 10.0});
+    s.hold_s = c.get_double("hold_s", s.hold_s, Range{0.0, 600.0});
+    c.finish();
+    return s;
+}
+
+void InFlightAligner::start(double t_s, const ImuSample& imu, const MagSample& mag, const GnssSample& fix,
+                            const AirSample& air) {
+    const Vec3 vtas_b = math::vtas_body(air.tas_mps, air.aoa_rad, air.aos_rad);
+    q_nb_ = coarse_attitude(imu.f_b_mps2 - imu.w_b_rps.cross(vtas_b), mag.b_b_nT,
+                            earth::magnetic_model_n(fix.lon_rad, fix.lat_rad));
+    w_nb_b_ = imu.w_b_rps;
+    v_n_ = fix.v_n_mps;
+    lon_rad_ = fix.lon_rad;
+    lat_rad_ = fix.lat_rad;
+    h_m_ = fix.h_m;
+    e_gyr_ = e_acc_ = e_mag_ = b_dev_ = Vec3::Zero();
+    p_.setZero();
+    // Attitude: tilt and heading sigmas on the NED side (phi is an NED-side error).
+    p_.diagonal().segment<3>(kPhi) << s_.tilt_sigma_rad * s_.tilt_sigma_rad, s_.tilt_sigma_rad * s_.tilt_sigma_rad,
+        s_.heading_sigma_rad * s_.heading_sigma_rad;
+    p_.diagonal().segment<3>(kV).setConstant(s_.gnss_vel_sigma_mps * s_.gnss_vel_sigma_mps);
+    p_.diagonal().segment<3>(kP) << s_.gnss_hor_sigma_m * s_.gnss_hor_sigma_m, s_.gnss_hor_sigma_m * s_.gnss_hor_sigma_m,
+        s_.gnss_ver_sigma_m * s_.gnss_ver_sigma_m;
+    p_.diagonal().segment<3>(kBg).setConstant(s_.gyr_bias_sigma_rps * s_.gyr_bias_sigma_rps);
+    p_.diagonal().segment<3>(kBa).setConstant(s_.acc_bias_sigma_mps2 * s_.acc_bias_sigma_mps2);
+    p_.diagonal().segment<3>(kEm).setConstant(s_.mag_bias_sigma_nT * s_.mag_bias_sigma_nT);
+    p_.diagonal().segment<3>(kBd).setConstant(s_.b_dev_sigma_nT * s_.b_dev_sigma_nT);
+    steps_ = 0;
+    started_ = true;
+    handed_over_ = criteria_met_ = false;
+    t_criteria_met_s_ = t_handed_over_s_ = t_s;
+}
+
+bool InFlightAligner::step(double t_s, const ImuSample& imu, const MagSample& mag, const GnssSample* fix) {
+    if (!started_ || handed_over_) return false;
+    propagate(imu);
+    ++steps_;
+    if (steps_ % static_cast<std::uint64_t>(s_.mag_period_steps) == 0) update_mag(mag);
+    if (fix == nullptr || !fix->fix_valid) return false;
+    update_fix(*fix);
+    const bool ok = tilt_sigma_rad() <= s_.tilt_sigma_max_rad && heading_sigma_rad() <= s_.heading_sigma_max_rad;
+    if (!ok) {
+        criteria_met_ = false;
+        return false;
+    }
+    if (!criteria_met_) {
+        criteria_met_ = true;
+        t_criteria_met_s_ = t_s;
+    }
+    if (t_s - t_criteria_met_s_ + 1e-9 < s_.hold_s) return false;
+    handed_over_ = true;
+    t_handed_over_s_ = t_s;
+    return true;
+}
+
+void InFlightAligner::propagate(const ImuSample& imu) {
+    const double dt = dt_s_;
+    const Mat3 r = q_nb_.toRotationMatrix();
+    const Vec3 w_ie = earth::w_ie_n(lat_rad_);
+    const Vec3 w_en = earth::w_en_n(lat_rad_, h_m_, v_n_);
+    const Vec3 f_n = r * (imu.f_b_mps2 - e_acc_);
+    // Error dynamics at the estimate before this step's propagation.
+    filters::SqMat<15> a = filters::SqMat<15>::Zero();
+    a.block<3, 3>(kPhi, kBg) = -r;
+    a.block<3, 3>(kV, kPhi) = -math::skew(f_n);
+    a.block<3, 3>(kV, kBa) = -r;
+    a.block<3, 3>(kP, kV) = Mat3::Identity();
+    const filters::SqMat<15> phi = filters::transition_matrix<15>(a, dt, 2);
+    filters::Vec<kN> q = filters::Vec<kN>::Zero();
+    q.segment<3>(kPhi).setConstant(s_.gyr_noise_rps_rts * s_.gyr_noise_rps_rts * dt);
+    q.segment<3>(kV).setConstant(s_.acc_noise_mps2_rts * s_.acc_noise_mps2_rts * dt);
+    q.segment<3>(kBg).setConstant(s_.gyr_bias_walk_rps_s_rts * s_.gyr_bias_walk_rps_s_rts * dt);
+    q.segment<3>(kBa).setConstant(s_.acc_bias_walk_mps2_s_rts * s_.acc_bias_walk_mps2_s_rts * dt);
+    q.segment<6>(kEm).setConstant(s_.mag_walk_nT_rts * s_.mag_walk_nT_rts * dt);
+    filters::propagate_covariance_leading_diag<kN, 15>(p_, phi, q);
+    // Nominal state.
+    const Vec3 w_nb = imu.w_b_rps - e_gyr_ - r.transpose() * (w_ie + w_en);
+    w_nb_b_ = w_nb;
+    const Vec3 v_dot = f_n + earth::gravity_n(lat_rad_, h_m_) - (2.0 * w_ie + w_en).cross(v_n_);
+    const Vec3 rates = earth::geodetic_rates(lat_rad_, h_m_, v_n_);  // lon_dot, lat_dot, h_dot
+    lon_rad_ = math::wrap_pi(lon_rad_ + dt * rates.x());
+    lat_rad_ += dt * rates.y();
+    h_m_ += dt * rates.z();
+    v_n_ += dt * v_dot;
+    q_nb_ = (q_nb_ * math::quat_from_rotv(w_nb * dt)).normalized();
+}
+
+void InFlightAligner::update_mag(const MagSample& mag) {
+    const Mat3 rt = q_nb_.toRotationMatrix().transpose();
+    const Vec3 b_n = earth::magnetic_model_n(lon_rad_, lat_rad_) - b_dev_;
+    filters::Mat<3, kN> h = filters::Mat<3, kN>::Zero();
+    h.block<3, 3>(0, kPhi) = rt * math::skew(b_n);
+    h.block<3, 3>(0, kEm) = Mat3::Identity();
+    h.block<3, 3>(0, kBd) = -rt;
+    const filters::Vec<3> r = mag.b_b_nT - (rt * b_n + e_mag_);
+    filters::Vec<kN> dx = filters::Vec<kN>::Zero();
+    const auto info = filters::joseph_update<kN, 3>(
+        dx, p_, r, h, filters::SqMat<3>::Identity() * (s_.mag_noise_nT * s_.mag_noise_nT));
+    if (info.ok) inject(dx);
+}
+
+void InFlightAligner::update_fix(const GnssSample& fix) {
+    const earth::Radii rr = earth::radii(lat_rad_);
+    filters::Vec<6> r;
+    r << (fix.lat_rad - lat_rad_) * (rr.m_m + h_m_),
+        math::wrap_pi(fix.lon_rad - lon_rad_) * (rr.n_m + h_m_) * std::cos(lat_rad_), -(fix.h_m - h_m_),
+        fix.v_n_mps - v_n_;
+    filters::Mat<6, kN> h = filters::Mat<6, kN>::Zero();
+    h.block<3, 3>(0, kP) = Mat3::Identity();
+    h.block<3, 3>(3, kV) = Mat3::Identity();
+    filters::Vec<6> var;
+    var << s_.gnss_hor_sigma_m * s_.gnss_hor_sigma_m, s_.gnss_hor_sigma_m * s_.gnss_hor_sigma_m,
+        s_.gnss_ver_sigma_m * s_.gnss_ver_sigma_m, Vec3::Constant(s_.gnss_vel_sigma_mps * s_.gnss_vel_sigma_mps);
+    filters::Vec<kN> dx = filters::Vec<kN>::Zero();
+    const auto info = filters::joseph_update<kN, 6>(dx, p_, r, h, filters::SqMat<6>(var.asDiagonal()));
+    if (info.ok) inject(dx);
+}
+
+void InFlightAligner::inject(const filters::Vec<kN>& dx) {
+    q_nb_ = (math::quat_from_rotv(dx.segment<3>(kPhi)) * q_nb_).normalized();
+    v_n_ += dx.segment<3>(kV);
+    const earth::Radii rr = earth::radii(lat_rad_);
+    lat_rad_ += dx(kP) / (rr.m_m + h_m_);
+    lon_rad_ = math::wrap_pi(lon_rad_ + dx(kP + 1) / ((rr.n_m + h_m_) * std::cos(lat_rad_)));
+    h_m_ -= dx(kP + 2);
+    e_gyr_ += dx.segment<3>(kBg);
+    e_acc_ += dx.segment<3>(kBa);
+    e_mag_ += dx.segment<3>(kEm);
+    b_dev_ += dx.segment<3>(kBd);
+}
+
+double InFlightAligner::tilt_sigma_rad() const { return std::sqrt(std::max(p_(kPhi, kPhi), p_(kPhi + 1, kPhi + 1))); }
+double InFlightAligner::heading_sigma_rad() const { return std::sqrt(p_(kPhi + 2, kPhi + 2)); }
+
+AttitudeEstimate InFlightAligner::estimate(std::uint64_t k, double t_s) const {
+    AttitudeEstimate e;
+    e.stamp = {k, t_s};
+    e.q_nb = q_nb_;
+    const math::Euler eu = math::euler_from_quat(q_nb_);
+    e.euler_rad = {eu.yaw_rad, eu.pitch_rad, eu.bank_rad};
+    e.w_nb_b_rps = w_nb_b_;
+    e.gyr_bias_rps = e_gyr_;
+    e.mag_bias_nT = e_mag_;
+    e.b_dev_n_nT = b_dev_;
+    e.att_sigma_rad = p_.diagonal().segment<3>(kPhi).cwiseMax(0.0).cwiseSqrt();
+    return e;
+}
+
+Alignment InFlightAligner::alignment() const {
+    Alignment a;
+    a.q_nb = q_nb_;
+    a.att_sigma_rad = std::max(tilt_sigma_rad(), heading_sigma_rad());
+    const auto sig = [this](int i) { return Vec3(p_.diagonal().segment<3>(i).cwiseSqrt()); };
+    a.gyr_err_rps = e_gyr_;
+    a.gyr_err_sigma_rps = sig(kBg);
+    a.acc_err_mps2 = e_acc_;
+    a.acc_err_sigma_mps2 = sig(kBa);
+    a.mag_err_nT = e_mag_;
+    a.mag_err_sigma_nT = sig(kEm);
+    a.b_dev_n_nT = b_dev_;
+    a.b_dev_sigma_nT = sig(kBd);
+    return a;
+}
+
+bool step_in_flight_aligner(InFlightAligner& a, double t_s, const ImuSample& imu, const MagSample& mag,
+                            const GnssSample& gnss, const AirSample& air) {
+    if (!checks::imu_ok(imu) || !checks::mag_ok(mag)) return false;
+    const bool fix = gnss.fix_valid && checks::gnss_fix_ok(gnss);
+    if (!a.started()) {
+        if (fix && checks::air_ok(air)) a.start(t_s, imu, mag, gnss, air);
+        return false;
+    }
+    return a.step(t_s, imu, mag, fix ? &gnss : nullptr);
+}
+
+}  // namespace gdnav::nav

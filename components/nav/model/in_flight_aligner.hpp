@@ -1,0 +1,115 @@
+#pragma once
+// In-flight fine alignment (docs/navigation.md, "In-flight fine alignment"): one GNSS-aided strapdown INS with the
+// magnetometer calibration in its state, run from the truth-free start until its own covariance says that the
+// attitude, the sensor errors and the field error are known as well as a pre-flight fine alignment would give them;
+// then the navigation filters are started again from it (`Alignment`, as from the sensors' published alignment).
+//
+// Why a joint filter: the paper's filters are a cascade (the attitude filter takes E_acc and p_n from the position
+// filter, the position filter takes the attitude as exact), so the heading and tilt information that the GNSS sees
+// in a turn cannot reach the attitude; here one covariance holds them all.
+//
+// Error state (21), true = estimate + error, the attitude error phi on the NED side (R = exp([phi x]) R_hat):
+//   phi(0..2), dv_n(3..5), dp_NED [m](6..8), dE_gyr(9..11), dE_acc(12..14), dE_mag(15..17), dB_dev(18..20)
+// Mechanisation (NED, ellipsoidal Earth of nav_earth): w_nb = w~ - E_gyr - R^T (w_ie + w_en);
+//   v_dot = R (f~ - E_acc) + g_n - (2 w_ie + w_en) x v;  (lon, lat, h)_dot from v.
+// Error dynamics: phi_dot = -R dE_gyr;  dv_dot = -[f_n x] phi - R dE_acc;  dp_dot = dv;  errors of E_*, B_dev: walks.
+// Magnetometer (every mag_period_steps): B~ = R^T (B_model - B_dev) + E_mag,
+//   H = [R^T [(B_model - B_dev) x], 0, 0, 0, 0, I, -R^T].
+// GNSS fix: position (NED metres from the estimate) and velocity, H = [0 0 I ...; 0 I 0 ...], no lever arm.
+// Handed over (latched) at a GNSS fix once tilt and heading sigmas have been below their limits for hold_s.
+#include <cstdint>
+
+#include "config/config.hpp"
+#include "filters/ekf.hpp"
+#include "math/rotation.hpp"
+#include "nav_types.hpp"
+
+namespace gdnav::nav {
+
+struct InFlightAlignerSettings {
+    // Start (truth-free: one-sample levelling and magnetic heading, sensor-grade errors).
+    double tilt_sigma_rad{math::deg2rad(1.5)};
+    double heading_sigma_rad{math::deg2rad(10.0)};
+    double gyr_bias_sigma_rps{math::deg2rad(0.2)};
+    double acc_bias_sigma_mps2{0.157};
+    double mag_bias_sigma_nT{530.0};
+    double b_dev_sigma_nT{200.0};
+    // Noise (white densities and walks) and measurements: the baseline sensors' figures (config/sensors), the walks
+    // doubled, the GNSS position widened to cover the ionospheric walk.
+    double gyr_noise_rps_rts{math::deg2rad(4.3e-3)};
+    double acc_noise_mps2_rts{5.0e-4};
+    double gyr_bias_walk_rps_s_rts{math::deg2rad(2.84e-4)};
+    double acc_bias_walk_mps2_s_rts{1.4e-4};
+    double mag_walk_nT_rts{0.1};
+    double mag_noise_nT{50.0};
+    int mag_period_steps{10};
+    double gnss_hor_sigma_m{8.0};
+    double gnss_ver_sigma_m{12.0};
+    double gnss_vel_sigma_mps{0.075};
+    // Hand-over.
+    double tilt_sigma_max_rad{math::deg2rad(0.05)};
+    double heading_sigma_max_rad{math::deg2rad(0.05)};
+    double hold_s{10.0};
+};
+
+// Reads an `in_flight_alignment` section (every key optional; keys and ranges in in_flight_aligner.cpp).
+InFlightAlignerSettings parse_in_flight_alignment(const config::Config& c);
+
+class InFlightAligner {
+public:
+    static constexpr int kN = 21;
+    InFlightAligner() = default;
+    InFlightAligner(const InFlightAlignerSettings& s, double dt_s) : s_(s), dt_s_(dt_s) {}
+
+    // Truth-free start on the first step with a valid fix: coarse attitude from the specific force less w x v_tas
+    // and the magnetometer, position and velocity from the fix, sensor errors zero.
+    void start(double t_s, const ImuSample& imu, const MagSample& mag, const GnssSample& fix, const AirSample& air);
+    [[nodiscard]] bool started() const { return started_; }
+
+    // One step after the start: propagation with this step's IMU sample, the magnetometer every mag_period_steps,
+    // the fix if there is one. True on the one step at which the alignment is handed over (then it stops).
+    bool step(double t_s, const ImuSample& imu, const MagSample& mag, const GnssSample* fix);
+    [[nodiscard]] bool handed_over() const { return handed_over_; }
+    [[nodiscard]] double t_handed_over_s() const { return t_handed_over_s_; }
+
+    [[nodiscard]] double tilt_sigma_rad() const;
+    [[nodiscard]] double heading_sigma_rad() const;
+    // The estimates and their 1-sigma, as the sensors' pre-flight alignment (att_sigma_rad: the larger of the tilt
+    // and heading sigmas).
+    [[nodiscard]] Alignment alignment() const;
+    // The aligner's attitude as an attitude filter's output (nav_att publishes it until the hand-over): the angular
+    // rate of its last propagation, the sensor and field errors, the NED-side attitude sigmas.
+    [[nodiscard]] AttitudeEstimate estimate(std::uint64_t k, double t_s) const;
+    [[nodiscard]] const Quat& q_nb() const { return q_nb_; }
+    [[nodiscard]] const Vec3& v_n_mps() const { return v_n_; }
+
+private:
+    void propagate(const ImuSample& imu);
+    void update_mag(const MagSample& mag);
+    void update_fix(const GnssSample& fix);
+    void inject(const filters::Vec<kN>& dx);
+
+    InFlightAlignerSettings s_{};
+    double dt_s_{0.01};
+    bool started_{false};
+    bool handed_over_{false};
+    double t_handed_over_s_{0.0};
+    double t_criteria_met_s_{0.0};
+    bool criteria_met_{false};
+    std::uint64_t steps_{0};
+    Quat q_nb_{Quat::Identity()};
+    Vec3 v_n_{Vec3::Zero()};
+    Vec3 w_nb_b_{Vec3::Zero()};
+    double lon_rad_{0.0}, lat_rad_{0.0}, h_m_{0.0};
+    Vec3 e_gyr_{Vec3::Zero()}, e_acc_{Vec3::Zero()}, e_mag_{Vec3::Zero()}, b_dev_{Vec3::Zero()};
+    filters::SqMat<kN> p_{filters::SqMat<kN>::Zero()};
+};
+
+// One step of a component that runs the aligner: starts it on the first step whose IMU, magnetometer and air data
+// samples pass the input checks with a valid fix, steps it after (a sample failing its check skips the step).
+// True on the hand-over step. nav_att and nav_pos both call it with the same samples, so both hand over at the same
+// step with the same alignment.
+bool step_in_flight_aligner(InFlightAligner& a, double t_s, const ImuSample& imu, const MagSample& mag,
+                            const GnssSample& gnss, const AirSample& air);
+
+}  // namespace gdnav::nav
