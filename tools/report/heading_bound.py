@@ -189,9 +189,11 @@ def main():
         import matplotlib.pyplot as plt
         fig, ax = plt.subplots(figsize=(8, 4.5))
         ax.semilogy(times, sig * DEG, label="ideal filter heading σ (GNSS position + velocity)")
-        for label, d in batches:
+        # Batches side by side (a few seconds apart) so that equal values stay visible.
+        for i, (label, d) in enumerate(batches):
             e = heading_errors_at_loss(d)
-            ax.plot([t_gnss], [math.sqrt(np.mean(e ** 2))], "o", label=f"{label}: rms |heading error| at the loss")
+            ax.plot([t_gnss + 4.0 * (i - (len(batches) - 1) / 2.0)], [math.sqrt(np.mean(e ** 2))], "osD^v"[i % 5],
+                    label=f"{label}: rms |heading error| at the loss")
         ax.axvline(t_gnss, color="k", lw=0.8, ls="--")
         ax.set_xlabel("t [s] (GNSS lost at the dashed line)")
         ax.set_ylabel("heading [deg]")

@@ -5,7 +5,8 @@
 //          gyr_bias_walk_dps_s_rts [0, 1e-1] (2.84e-4), acc_bias_walk_mps2_s_rts [0, 1e-1] (1.4e-4),
 //          mag_walk_nT_rts [0, 100] (0.1), mag_noise_nT [0.1, 1e4] (50), mag_period_steps [1, 1000] (10),
 //          gnss_hor_sigma_m [0.1, 100] (8), gnss_ver_sigma_m [0.1, 100] (12), gnss_vel_sigma_mps [0.01, 10] (0.075)
-//   hand-over: tilt_sigma_max_deg [0.001, 10] (0.05), heading_sigma_max_deg [0.001, 10] (0.05), hold_s [0, 600] (10)
+//   hand-over: tilt_sigma_max_deg [0.001, 10] (0.05), heading_sigma_max_deg [0.001, 10] (0.05), hold_s [0, 600] (10),
+//              not_before_s [-1e6, 1e6] (none; a run time [s] before which it does not hand over)
 #include "in_flight_aligner.hpp"
 
 #include <algorithm>
@@ -49,6 +50,7 @@ InFlightAlignerSettings parse_in_flight_alignment(const config::Config& c) {
     s.tilt_sigma_max_rad = deg_key(c, "tilt_sigma_max_deg", s.tilt_sigma_max_rad, Range{0.001, 10.0});
     s.heading_sigma_max_rad = deg_key(c, "heading_sigma_max_deg", s.heading_sigma_max_rad, Range{0.001, 10.0});
     s.hold_s = c.get_double("hold_s", s.hold_s, Range{0.0, 600.0});
+    s.not_before_s = c.get_double("not_before_s", s.not_before_s, Range{-1e6, 1e6});
     c.finish();
     return s;
 }
@@ -97,7 +99,7 @@ bool InFlightAligner::step(double t_s, const ImuSample& imu, const MagSample& ma
         criteria_met_ = true;
         t_criteria_met_s_ = t_s;
     }
-    if (t_s - t_criteria_met_s_ + 1e-9 < s_.hold_s) return false;
+    if (t_s - t_criteria_met_s_ + 1e-9 < s_.hold_s || t_s < s_.not_before_s) return false;
     handed_over_ = true;
     t_handed_over_s_ = t_s;
     return true;

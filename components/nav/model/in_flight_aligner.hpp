@@ -16,8 +16,11 @@
 // Magnetometer (every mag_period_steps): B~ = R^T (B_model - B_dev) + E_mag,
 //   H = [R^T [(B_model - B_dev) x], 0, 0, 0, 0, I, -R^T].
 // GNSS fix: position (NED metres from the estimate) and velocity, H = [0 0 I ...; 0 I 0 ...], no lever arm.
-// Handed over (latched) at a GNSS fix once tilt and heading sigmas have been below their limits for hold_s.
+// Handed over (latched) at a GNSS fix once tilt and heading sigmas have been below their limits for hold_s, and not
+// before not_before_s (the calibrated scenarios hand over at the paper's t0, where its filters start from the
+// pre-flight alignment).
 #include <cstdint>
+#include <limits>
 
 #include "config/config.hpp"
 #include "filters/ekf.hpp"
@@ -50,6 +53,7 @@ struct InFlightAlignerSettings {
     double tilt_sigma_max_rad{math::deg2rad(0.05)};
     double heading_sigma_max_rad{math::deg2rad(0.05)};
     double hold_s{10.0};
+    double not_before_s{-std::numeric_limits<double>::infinity()};  // no hand-over before this time
 };
 
 // Reads an `in_flight_alignment` section (every key optional; keys and ranges in in_flight_aligner.cpp).

@@ -1,12 +1,9 @@
-// Issue 30's acceptance, measured in CTest on 10 runs (docs/results.md has 100 of #2 and 20 of #1): the calibrated
-// scenario #2 with its truth-free start and in-flight fine alignment against the aligned start (the sensors' published
-// pre-flight alignment) on the same runs, seed 1, direct layout, the paper's filter. Metrics from t = 0 (the paper's
-// window). Every run aligns in flight; no run diverges; the final horizontal error is within 10 % of the aligned
-// start's. The mean attitude error is not within 10 % (docs/navigation.md, "In-flight fine alignment": the aligner's
-// heading at the hand-over is worth about 0.05 deg, the pre-flight alignment's emulation 0.1 deg with 1 % bias
-// errors; measured 1.08 times the aligned start's on these 10 runs, 1.29 over 100), so it is held to 1.35 times: a
-// guard against losing what the hand-over gives (the truth-free start without it was 10 to 100 times), not the
-// issue's target. It prints every run's figures.
+// Issue 30's acceptance, measured in CTest on 10 runs (docs/results.md has 100 of #2 and 20 of #1, two seeds): the
+// calibrated scenario #2 with its truth-free start and in-flight fine alignment against the aligned start (the
+// sensors' published pre-flight alignment) on the same runs, seed 1, direct layout, the paper's filter. Metrics from
+// t = 0 (the paper's window). Every run aligns in flight; no run diverges; the mean attitude error and the mean final
+// horizontal error are within 10 % of the aligned start's (measured on these runs: 0.89 and 1.00 times). Runs are
+// bit-reproducible, so the figures are the same on every machine. It prints every run's figures.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -55,7 +52,7 @@ Batch run_batch(const std::string& tag, const std::vector<std::string>& extra) {
 }
 }  // namespace
 
-TEST(NavInFlightAlignmentBatch, Scenario2EveryRunAlignsNoneDivergesFinalErrorWithin10PercentOfTheAlignedStart) {
+TEST(NavInFlightAlignmentBatch, Scenario2EveryRunAlignsNoneDivergesAndErrorsWithin10PercentOfTheAlignedStart) {
     const Batch al = run_batch("ifa_batch_aligned", {"--set", "components.nav_att.init_mode=alignment", "--set",
                                                      "components.nav_pos.init_mode=alignment", "--set",
                                                      "components.nav_att.in_flight_alignment=~", "--set",
@@ -71,5 +68,5 @@ TEST(NavInFlightAlignmentBatch, Scenario2EveryRunAlignsNoneDivergesFinalErrorWit
     std::printf("mean %27.3f %10.3f | %28.1f %10.1f  (ratios %.3f, %.3f)\n", al.att_mean, tf.att_mean, al.hor_mean,
                 tf.hor_mean, tf.att_mean / al.att_mean, tf.hor_mean / al.hor_mean);
     EXPECT_LE(tf.hor_mean, 1.1 * al.hor_mean);
-    EXPECT_LE(tf.att_mean, 1.35 * al.att_mean);
+    EXPECT_LE(tf.att_mean, 1.1 * al.att_mean);
 }

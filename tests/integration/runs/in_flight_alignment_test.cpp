@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kSteps = "10500";  // the hand-over of run 0 of seed 1 is at step 9 700 (t = -110 s)
+constexpr const char* kSteps = "16000";  // the scenario hands over at the paper's t0 = -50 s, step 15 700
 
 std::vector<gdnav::msg::AttitudeEstimate> fly(const fs::path& out, const std::string& layout, Result& r) {
     r = run({kExe, "run", "--scenario", "paper2_calibrated", "--seed", "1", "--run", "0", "--layout", layout, "--steps",

@@ -39,9 +39,10 @@ synth::Scenario scenario(double yaw0_rad, double bank_deg) {
     return sc;
 }
 
-Flown fly(const synth::Scenario& sc, int steps, std::uint64_t seed) {
+Flown fly(const synth::Scenario& sc, int steps, std::uint64_t seed,
+          const InFlightAlignerSettings& settings = InFlightAlignerSettings{}) {
     synth::Generator gen(sc, rnd::Stream(seed));
-    Flown f{InFlightAligner(InFlightAlignerSettings{}, sc.dt_s), {}, -1.0};
+    Flown f{InFlightAligner(settings, sc.dt_s), {}, -1.0};
     for (int k = 0; k < steps; ++k) {
         const synth::Sample s = gen.next();
         f.truth = s.truth;
@@ -100,6 +101,19 @@ TEST(NavInFlightAligner, NeverHandsOverInStraightFlightOrInOneSteadyTurn) {
         EXPECT_FALSE(f.aligner.handed_over());
         EXPECT_GT(math::rad2deg(f.aligner.heading_sigma_rad()), 0.5);
     }
+}
+
+TEST(NavInFlightAligner, HandsOverAtTheFirstFixFromNotBeforeOnceAligned) {
+    InFlightAlignerSettings st;
+    st.heading_sigma_max_rad = math::deg2rad(0.08);
+    const Flown early = fly(scenario(0.3, 20.0), 15000, 8, st);
+    st.not_before_s = 130.0;
+    const Flown late = fly(scenario(0.3, 20.0), 15000, 8, st);
+    std::printf("hand-over at %.1f s, with not_before_s 130 at %.1f s\n", early.t_handed_over_s, late.t_handed_over_s);
+    ASSERT_TRUE(early.aligner.handed_over());
+    EXPECT_LT(early.t_handed_over_s, 130.0);
+    ASSERT_TRUE(late.aligner.handed_over());
+    EXPECT_EQ(late.t_handed_over_s, 130.0);  // a fix every second, aligned long before
 }
 
 TEST(NavInFlightAligner, BadKeysNameTheKey) {
