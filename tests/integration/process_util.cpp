@@ -112,6 +112,12 @@ bool wait_for_log(pid_t pid, const fs::path& log, const std::string& text, doubl
     return true;
 }
 
+std::size_t count_of(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
+    return n;
+}
+
 std::string read_file(const fs::path& p) {
     std::ifstream f(p);
     std::stringstream ss;

@@ -40,6 +40,8 @@ bool alive(pid_t pid);
 // Waits until the file `log` contains `text`; false when `pid` is no longer alive or after timeout_s.
 bool wait_for_log(pid_t pid, const std::filesystem::path& log, const std::string& text, double timeout_s);
 std::string read_file(const std::filesystem::path& p);
+// How many times `what` occurs in `text` (overlapping occurrences counted), e.g. a log line that must appear once.
+std::size_t count_of(const std::string& text, const std::string& what);
 std::map<std::string, pid_t> read_processes(const std::filesystem::path& out_dir);
 // topic -> digest of <out>/record/digest.yaml (empty when missing).
 std::map<std::string, std::string> read_digests(const std::filesystem::path& out_dir);

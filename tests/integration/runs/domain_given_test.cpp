@@ -24,12 +24,6 @@ int domain_of(const fs::path& run_dir) {
     return YAML::LoadFile((run_dir / "run.yaml").string())["run"]["domain_id"].as<int>();
 }
 
-std::size_t count_of(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-    return n;
-}
-
 }  // namespace
 
 TEST(DomainGiven, ReplayRunsOnTheGivenDomain) {

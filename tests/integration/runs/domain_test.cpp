@@ -59,12 +59,6 @@ int finish(pid_t pid) {
     return code;
 }
 
-std::size_t count_of(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-    return n;
-}
-
 // Another run as the domain shows it to a starting clock: its member's heartbeats every 50 ms from the start and,
 // from `clock_after` on (never when negative), its clock's heartbeat naming its output folder.
 class OtherRun {

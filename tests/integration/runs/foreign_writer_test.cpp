@@ -31,12 +31,6 @@ std::vector<std::string> run_args(const std::filesystem::path& out) {
             std::to_string(kSteps), "--domain", std::to_string(kDomain), "--record", "all", "--out", out.string()};
 }
 
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-    return n;
-}
-
 // A plain participant (no member announced): follows the clock's Ticks and writes an AirSample (default values, a
 // valid stamp) for every step from the Tick on, kAhead steps ahead, until `stop`. Returns how many it wrote.
 std::uint64_t rogue(const std::atomic<bool>& stop) {
@@ -107,8 +101,8 @@ TEST(ForeignWriter, APlainParticipantOnADataTopicChangesNothingAndIsCounted) {
 
     // Rate-limited: one line at the first rejection, then at most one per 5 s (the run takes a few seconds), and
     // one total per input at the end.
-    const std::size_t lines = count(r1.output, "not written by its producer (sensors_air) dropped");
+    const std::size_t lines = count_of(r1.output, "not written by its producer (sensors_air) dropped");
     EXPECT_GE(lines, 2u) << r1.output;
     EXPECT_LE(lines, 8u) << r1.output;
-    EXPECT_EQ(count(r1.output, "': rejected "), 2u) << r1.output;
+    EXPECT_EQ(count_of(r1.output, "': rejected "), 2u) << r1.output;
 }

@@ -34,12 +34,6 @@ double handed_over_at(const std::string& log, const std::string& who, const std:
     return std::stod(m[1]);
 }
 
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-    return n;
-}
-
 }  // namespace
 
 TEST(InFlightAlignment, NavAttAndNavPosHandOverAtTheSameStepInOneProcessAndInSeveral) {
@@ -52,8 +46,8 @@ TEST(InFlightAlignment, NavAttAndNavPosHandOverAtTheSameStepInOneProcessAndInSev
         const double t_pos = handed_over_at(r->output, "nav_pos", "aligned");
         ASSERT_FALSE(std::isnan(t_att)) << r->output;
         EXPECT_EQ(t_att, t_pos) << r->output;
-        EXPECT_EQ(count(r->output, "in-flight alignment at t ="), 1u) << r->output;
-        EXPECT_EQ(count(r->output, "aligned at t ="), 1u) << r->output;
+        EXPECT_EQ(count_of(r->output, "in-flight alignment at t ="), 1u) << r->output;
+        EXPECT_EQ(count_of(r->output, "aligned at t ="), 1u) << r->output;
         EXPECT_EQ(t_att, handed_over_at(ra.output, "nav_att", "in-flight alignment"));
     }
     ASSERT_EQ(direct.size(), distributed.size());

@@ -28,12 +28,6 @@ std::vector<gdnav::msg::GuidanceTargets> fly(const fs::path& out, const std::str
     return read_records<gdnav::msg::GuidanceTargets>(out, "gdnav/GuidanceTargets");
 }
 
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-    return n;
-}
-
 }  // namespace
 
 TEST(UntilAligned, AltitudeTargetsWaitForTheAlignedFlagThenTheMissionsOwnAreFlown) {
@@ -59,8 +53,8 @@ TEST(UntilAligned, AltitudeTargetsWaitForTheAlignedFlagThenTheMissionsOwnAreFlow
     EXPECT_GT(before, 1000u);
     EXPECT_GT(after, 1000u);
     // Each change of mode is logged once, the second at the time of the flag.
-    EXPECT_EQ(count(r.output, "navigation not aligned: altitude targets flown as air_path_angle 0"), 1u) << r.output;
-    EXPECT_EQ(count(r.output, "navigation aligned: flying the mission's altitude targets"), 1u) << r.output;
+    EXPECT_EQ(count_of(r.output, "navigation not aligned: altitude targets flown as air_path_angle 0"), 1u) << r.output;
+    EXPECT_EQ(count_of(r.output, "navigation aligned: flying the mission's altitude targets"), 1u) << r.output;
     std::smatch at;
     ASSERT_TRUE(std::regex_search(r.output, at, std::regex("flying the mission's altitude targets from t = (-?[0-9.]+) s")))
         << r.output;

@@ -36,12 +36,6 @@ Result replay(const fs::path& imported, const std::string& topics, const fs::pat
                240.0);
 }
 
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-    return n;
-}
-
 // reference.csv rewritten with latitude, longitude and the Euler angles (from the recorded Truth) in degrees.
 void write_degree_reference(const fs::path& orig, const fs::path& to) {
     const auto truth = read_records<gdnav::msg::Truth>(orig, "gdnav/Truth");
@@ -89,7 +83,7 @@ TEST(ReplayReference, ImportedLogScoresOnlyAgainstAReferenceAndItsOwnTruthGivesT
     EXPECT_NE(r.output.find("no --reference"), std::string::npos) << r.output;
     r = replay(plain, kSensors, rep / "plain");
     ASSERT_EQ(r.exit_code, 0) << r.output;
-    EXPECT_EQ(count(r.output, "nav_recorder: reference: none ("), 1u) << r.output;
+    EXPECT_EQ(count_of(r.output, "nav_recorder: reference: none ("), 1u) << r.output;
     const YAML::Node m = YAML::LoadFile((rep / "plain" / "metrics.yaml").string());
     EXPECT_TRUE(m["complete"].as<bool>());
     EXPECT_EQ(m["reference"].as<std::string>(), "none");
@@ -110,7 +104,7 @@ TEST(ReplayReference, ImportedLogScoresOnlyAgainstAReferenceAndItsOwnTruthGivesT
         << r.output;
     r = replay(withref, kSensors + ",Truth", rep / "withref");
     ASSERT_EQ(r.exit_code, 0) << r.output;
-    EXPECT_EQ(count(r.output, "reference: none"), 0u) << r.output;
+    EXPECT_EQ(count_of(r.output, "reference: none"), 0u) << r.output;
     EXPECT_EQ(read_file(rep / "withref" / "metrics.yaml"), read_file(orig / "metrics.yaml"));
 
     // In degrees with Euler angles: equal to rounding. deg -> rad and Euler -> quaternion change the last bits
