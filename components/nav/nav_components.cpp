@@ -298,18 +298,17 @@ private:
     // The position filter starts again with the in-flight alignment's E_acc (the attitude filter has just started
     // again from its attitude; the hand-over step always has a fix).
     void realign(const runtime::StepContext& ctx) {
-        const bool ok = gnss_.available() && att_.available() && gnss_.get().fix_valid() &&
-                        checks::gnss_fix_ok(from_msg(gnss_.get())) && checks::air_estimate_ok(from_msg(air_.get())) &&
-                        checks::attitude_estimate_ok(from_msg(att_.get()));
-        if (!ok) {
+        GnssSample gnss;  // fix_valid false unless a sample is there
+        if (gnss_.available()) gnss = from_msg(gnss_.get());
+        const AirDataEstimate air = from_msg(air_.get());
+        const AttitudeEstimate att = att_.available() ? from_msg(att_.get()) : AttitudeEstimate{};
+        if (!gnss.fix_valid || !att_.available() || !checks::gnss_fix_ok(gnss) || !checks::air_estimate_ok(air) ||
+            !checks::attitude_estimate_ok(att)) {
             publish_status("in-flight alignment: the position filter keeps its own E_acc (no good fix, air data or "
                            "attitude sample at the hand-over)");
             return;
         }
-        const GnssSample gnss = from_msg(gnss_.get());
         const ImuSample imu = from_msg(imu_.get());
-        const AirDataEstimate air = from_msg(air_.get());
-        const AttitudeEstimate att = from_msg(att_.get());
         const Alignment al = aligner_->alignment();
         const PositionEstimate e =
             filter_.initialize(ctx.k, ctx.t_s, imu, gnss, air, att, al.acc_err_mps2, al.acc_err_sigma_mps2);

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""How well can GNSS velocity and position tell the heading before the GNSS loss? (docs/navigation.md, "What the
-pattern can give: a bound on the heading"; issue 30.)
+"""How well can GNSS velocity and position tell the heading before the GNSS loss? (docs/navigation.md,
+"In-flight fine alignment".)
 
   tools/report/heading_bound.py --run RUN_DIR [--batch LABEL=DIR ...] [--heading-sigma-deg 5] [--tilt-sigma-deg 1.5]
                                 [--no-gyro-noise] [--png FILE]

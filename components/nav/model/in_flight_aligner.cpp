@@ -55,6 +55,14 @@ InFlightAlignerSettings parse_in_flight_alignment(const config::Config& c) {
     return s;
 }
 
+InFlightAligner::InFlightAligner(const InFlightAlignerSettings& s, double dt_s) : s_(s), dt_s_(dt_s) {
+    q_diag_.segment<3>(kPhi).setConstant(s_.gyr_noise_rps_rts * s_.gyr_noise_rps_rts * dt_s_);
+    q_diag_.segment<3>(kV).setConstant(s_.acc_noise_mps2_rts * s_.acc_noise_mps2_rts * dt_s_);
+    q_diag_.segment<3>(kBg).setConstant(s_.gyr_bias_walk_rps_s_rts * s_.gyr_bias_walk_rps_s_rts * dt_s_);
+    q_diag_.segment<3>(kBa).setConstant(s_.acc_bias_walk_mps2_s_rts * s_.acc_bias_walk_mps2_s_rts * dt_s_);
+    q_diag_.segment<6>(kEm).setConstant(s_.mag_walk_nT_rts * s_.mag_walk_nT_rts * dt_s_);
+}
+
 void InFlightAligner::start(double t_s, const ImuSample& imu, const MagSample& mag, const GnssSample& fix,
                             const AirSample& air) {
     const Vec3 vtas_b = math::vtas_body(air.tas_mps, air.aoa_rad, air.aos_rad);
@@ -118,13 +126,7 @@ void InFlightAligner::propagate(const ImuSample& imu) {
     a.block<3, 3>(kV, kBa) = -r;
     a.block<3, 3>(kP, kV) = Mat3::Identity();
     const filters::SqMat<15> phi = filters::transition_matrix<15>(a, dt, 2);
-    filters::Vec<kN> q = filters::Vec<kN>::Zero();
-    q.segment<3>(kPhi).setConstant(s_.gyr_noise_rps_rts * s_.gyr_noise_rps_rts * dt);
-    q.segment<3>(kV).setConstant(s_.acc_noise_mps2_rts * s_.acc_noise_mps2_rts * dt);
-    q.segment<3>(kBg).setConstant(s_.gyr_bias_walk_rps_s_rts * s_.gyr_bias_walk_rps_s_rts * dt);
-    q.segment<3>(kBa).setConstant(s_.acc_bias_walk_mps2_s_rts * s_.acc_bias_walk_mps2_s_rts * dt);
-    q.segment<6>(kEm).setConstant(s_.mag_walk_nT_rts * s_.mag_walk_nT_rts * dt);
-    filters::propagate_covariance_leading_diag<kN, 15>(p_, phi, q);
+    filters::propagate_covariance_leading_diag<kN, 15>(p_, phi, q_diag_);
     // Nominal state.
     const Vec3 w_nb = imu.w_b_rps - e_gyr_ - r.transpose() * (w_ie + w_en);
     w_nb_b_ = w_nb;

@@ -63,7 +63,7 @@ class InFlightAligner {
 public:
     static constexpr int kN = 21;
     InFlightAligner() = default;
-    InFlightAligner(const InFlightAlignerSettings& s, double dt_s) : s_(s), dt_s_(dt_s) {}
+    InFlightAligner(const InFlightAlignerSettings& s, double dt_s);
 
     // Truth-free start on the first step with a valid fix: coarse attitude from the specific force less w x v_tas
     // and the magnetometer, position and velocity from the fix, sensor errors zero.
@@ -85,7 +85,6 @@ public:
     // rate of its last propagation, the sensor and field errors, the NED-side attitude sigmas.
     [[nodiscard]] AttitudeEstimate estimate(std::uint64_t k, double t_s) const;
     [[nodiscard]] const Quat& q_nb() const { return q_nb_; }
-    [[nodiscard]] const Vec3& v_n_mps() const { return v_n_; }
 
 private:
     void propagate(const ImuSample& imu);
@@ -95,6 +94,7 @@ private:
 
     InFlightAlignerSettings s_{};
     double dt_s_{0.01};
+    filters::Vec<kN> q_diag_{filters::Vec<kN>::Zero()};  // per-step process noise, from the settings and dt
     bool started_{false};
     bool handed_over_{false};
     double t_handed_over_s_{0.0};
