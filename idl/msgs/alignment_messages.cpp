@@ -4,3 +4,4 @@
 #include "msgs/message_ops_impl.hpp"
 
 GDNAV_DECLARE_MESSAGE(gdnav::msg::NavAlignment, gdnav::msg::NavAlignmentPubSubType)
+GDNAV_DECLARE_MESSAGE(gdnav::msg::NavHandover, gdnav::msg::NavHandoverPubSubType)

@@ -140,6 +140,29 @@ AttitudeEstimate AttitudeFilter::realign(std::uint64_t k, double t_s, const ImuS
     return initialize(k, t_s, in);
 }
 
+AttitudeEstimate AttitudeFilter::hand_over(std::uint64_t k, double t_s, const AttitudeHandover& h) {
+    const Quat qn = h.q_nb.normalized();
+    x_.setZero();
+    x_.segment<4>(att::kQ) = math::to_wxyz(qn);
+    x_.segment<3>(att::kW) = h.w_nb_b_rps;
+    x_.segment<3>(att::kEgyr) = h.gyr_err_rps;
+    x_.segment<3>(att::kEmag) = h.mag_err_nT;
+    x_.segment<3>(att::kBdev) = h.b_dev_n_nT;
+    // Error order of h.p_err: phi_n (0..2), E_gyr (3..5), E_mag (6..8), B_dev (9..11).
+    filters::Mat<att::kN, 12> t = filters::Mat<att::kN, 12>::Zero();
+    t.block<4, 3>(att::kQ, 0) = 0.5 * filters::xi(x_.segment<4>(att::kQ)) * qn.toRotationMatrix().transpose();
+    t.block<3, 3>(att::kW, 3) = -Eigen::Matrix3d::Identity();
+    t.block<3, 3>(att::kEgyr, 3).setIdentity();
+    t.block<3, 3>(att::kEmag, 6).setIdentity();
+    t.block<3, 3>(att::kBdev, 9).setIdentity();
+    p_ = t * h.p_err * t.transpose();
+    p_.diagonal().segment<3>(att::kW).array() += tun_.gyr_noise_var;
+    filters::symmetrize<att::kN>(p_);
+    pe_ = eskf::from_additive(x_, p_);
+    initialized_ = true;
+    return output(k, t_s);
+}
+
 AttitudeEstimate AttitudeFilter::initialize(std::uint64_t k, double t_s, const AttitudeInit& in) {
     x_.setZero();
     const Quat qn = in.q_nb.normalized();

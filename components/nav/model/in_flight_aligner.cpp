@@ -29,8 +29,8 @@ double deg_key(const config::Config& c, const char* key, double fallback_rad, Ra
 }
 }  // namespace
 
-InFlightAlignerSettings parse_in_flight_alignment(const config::Config& c) {
-    InFlightAlignerSettings s;
+InFlightAlignerSettings parse_in_flight_alignment(const config::Config& c, const InFlightAlignerSettings& base) {
+    InFlightAlignerSettings s = base;
     s.tilt_sigma_rad = deg_key(c, "tilt_sigma_deg", s.tilt_sigma_rad, Range{0.1, 30.0});
     s.heading_sigma_rad = deg_key(c, "heading_sigma_deg", s.heading_sigma_rad, Range{0.5, 60.0});
     s.gyr_bias_sigma_rps = deg_key(c, "gyr_bias_sigma_dps", s.gyr_bias_sigma_rps, Range{1e-4, 5.0});
@@ -55,7 +55,8 @@ InFlightAlignerSettings parse_in_flight_alignment(const config::Config& c) {
     return s;
 }
 
-InFlightAligner::InFlightAligner(const InFlightAlignerSettings& s, double dt_s) : s_(s), dt_s_(dt_s) {
+InFlightAligner::InFlightAligner(const InFlightAlignerSettings& s, double dt_s, HandOver mode)
+    : s_(s), dt_s_(dt_s), mode_(mode) {
     q_diag_.segment<3>(kPhi).setConstant(s_.gyr_noise_rps_rts * s_.gyr_noise_rps_rts * dt_s_);
     q_diag_.segment<3>(kV).setConstant(s_.acc_noise_mps2_rts * s_.acc_noise_mps2_rts * dt_s_);
     q_diag_.segment<3>(kBg).setConstant(s_.gyr_bias_walk_rps_s_rts * s_.gyr_bias_walk_rps_s_rts * dt_s_);
@@ -69,26 +70,46 @@ void InFlightAligner::start(double t_s, const ImuSample& imu, const MagSample& m
     q_nb_ = coarse_attitude(imu.f_b_mps2 - imu.w_b_rps.cross(vtas_b), mag.b_b_nT,
                             earth::magnetic_model_n(fix.lon_rad, fix.lat_rad));
     w_nb_b_ = imu.w_b_rps;
-    v_n_ = fix.v_n_mps;
-    lon_rad_ = fix.lon_rad;
-    lat_rad_ = fix.lat_rad;
-    h_m_ = fix.h_m;
     e_gyr_ = e_acc_ = e_mag_ = b_dev_ = Vec3::Zero();
-    p_.setZero();
+    start_common(t_s, fix);
     // Attitude: tilt and heading sigmas on the NED side (phi is an NED-side error).
     p_.diagonal().segment<3>(kPhi) << s_.tilt_sigma_rad * s_.tilt_sigma_rad, s_.tilt_sigma_rad * s_.tilt_sigma_rad,
         s_.heading_sigma_rad * s_.heading_sigma_rad;
-    p_.diagonal().segment<3>(kV).setConstant(s_.gnss_vel_sigma_mps * s_.gnss_vel_sigma_mps);
-    p_.diagonal().segment<3>(kP) << s_.gnss_hor_sigma_m * s_.gnss_hor_sigma_m, s_.gnss_hor_sigma_m * s_.gnss_hor_sigma_m,
-        s_.gnss_ver_sigma_m * s_.gnss_ver_sigma_m;
     p_.diagonal().segment<3>(kBg).setConstant(s_.gyr_bias_sigma_rps * s_.gyr_bias_sigma_rps);
     p_.diagonal().segment<3>(kBa).setConstant(s_.acc_bias_sigma_mps2 * s_.acc_bias_sigma_mps2);
     p_.diagonal().segment<3>(kEm).setConstant(s_.mag_bias_sigma_nT * s_.mag_bias_sigma_nT);
     p_.diagonal().segment<3>(kBd).setConstant(s_.b_dev_sigma_nT * s_.b_dev_sigma_nT);
+}
+
+void InFlightAligner::start(double t_s, const Alignment& align, const ImuSample& imu, const GnssSample& fix) {
+    q_nb_ = align.q_nb.normalized();
+    e_gyr_ = align.gyr_err_rps;
+    e_acc_ = align.acc_err_mps2;
+    e_mag_ = align.mag_err_nT;
+    b_dev_ = align.b_dev_n_nT;
+    w_nb_b_ = imu.w_b_rps - e_gyr_;
+    start_common(t_s, fix);
+    p_.diagonal().segment<3>(kPhi).setConstant(align.att_sigma_rad * align.att_sigma_rad);
+    p_.diagonal().segment<3>(kBg) = align.gyr_err_sigma_rps.array().square();
+    p_.diagonal().segment<3>(kBa) = align.acc_err_sigma_mps2.array().square();
+    p_.diagonal().segment<3>(kEm) = align.mag_err_sigma_nT.array().square();
+    p_.diagonal().segment<3>(kBd) = align.b_dev_sigma_nT.array().square();
+}
+
+// Position, velocity and their covariance from the fix; the rest of the covariance is the caller's.
+void InFlightAligner::start_common(double t_s, const GnssSample& fix) {
+    v_n_ = fix.v_n_mps;
+    lon_rad_ = fix.lon_rad;
+    lat_rad_ = fix.lat_rad;
+    h_m_ = fix.h_m;
+    p_.setZero();
+    p_.diagonal().segment<3>(kV).setConstant(s_.gnss_vel_sigma_mps * s_.gnss_vel_sigma_mps);
+    p_.diagonal().segment<3>(kP) << s_.gnss_hor_sigma_m * s_.gnss_hor_sigma_m, s_.gnss_hor_sigma_m * s_.gnss_hor_sigma_m,
+        s_.gnss_ver_sigma_m * s_.gnss_ver_sigma_m;
     steps_ = 0;
     started_ = true;
-    handed_over_ = criteria_met_ = false;
-    t_criteria_met_s_ = t_handed_over_s_ = t_s;
+    aligned_ = handed_over_ = criteria_met_ = false;
+    t_criteria_met_s_ = t_aligned_s_ = t_handed_over_s_ = t_s;
 }
 
 bool InFlightAligner::step(double t_s, const ImuSample& imu, const MagSample& mag, const GnssSample* fix) {
@@ -98,6 +119,7 @@ bool InFlightAligner::step(double t_s, const ImuSample& imu, const MagSample& ma
     if (steps_ % static_cast<std::uint64_t>(s_.mag_period_steps) == 0) update_mag(mag);
     if (fix == nullptr || !fix->fix_valid) return false;
     update_fix(*fix);
+    if (aligned_) return false;  // latched: the criteria are not watched any more
     const bool ok = tilt_sigma_rad() <= s_.tilt_sigma_max_rad && heading_sigma_rad() <= s_.heading_sigma_max_rad;
     if (!ok) {
         criteria_met_ = false;
@@ -108,9 +130,18 @@ bool InFlightAligner::step(double t_s, const ImuSample& imu, const MagSample& ma
         t_criteria_met_s_ = t_s;
     }
     if (t_s - t_criteria_met_s_ + 1e-9 < s_.hold_s || t_s < s_.not_before_s) return false;
+    aligned_ = true;
+    t_aligned_s_ = t_s;
+    if (mode_ == HandOver::kAtGnssLoss) return false;  // it goes on until the loss
     handed_over_ = true;
     t_handed_over_s_ = t_s;
     return true;
+}
+
+void InFlightAligner::hand_over(double t_s) {
+    if (!started_ || handed_over_) return;
+    handed_over_ = true;
+    t_handed_over_s_ = t_s;
 }
 
 void InFlightAligner::propagate(const ImuSample& imu) {
@@ -200,6 +231,19 @@ AttitudeEstimate InFlightAligner::estimate(std::uint64_t k, double t_s) const {
     return e;
 }
 
+AttitudeHandover InFlightAligner::handover() const {
+    AttitudeHandover h;
+    h.q_nb = q_nb_;
+    h.w_nb_b_rps = w_nb_b_;
+    h.gyr_err_rps = e_gyr_;
+    h.mag_err_nT = e_mag_;
+    h.b_dev_n_nT = b_dev_;
+    constexpr int kIdx[4] = {kPhi, kBg, kEm, kBd};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) h.p_err.block<3, 3>(3 * i, 3 * j) = p_.block<3, 3>(kIdx[i], kIdx[j]);
+    return h;
+}
+
 Alignment InFlightAligner::alignment() const {
     Alignment a;
     a.q_nb = q_nb_;
@@ -217,11 +261,16 @@ Alignment InFlightAligner::alignment() const {
 }
 
 bool step_in_flight_aligner(InFlightAligner& a, double t_s, const ImuSample& imu, const MagSample& mag,
-                            const GnssSample& gnss, const AirSample& air) {
+                            const GnssSample& gnss, const AirSample& air, const Alignment* published) {
     if (!checks::imu_ok(imu) || !checks::mag_ok(mag)) return false;
     const bool fix = gnss.fix_valid && checks::gnss_fix_ok(gnss);
     if (!a.started()) {
-        if (fix && checks::air_ok(air)) a.start(t_s, imu, mag, gnss, air);
+        if (!fix) return false;
+        if (published != nullptr) {
+            if (published->valid()) a.start(t_s, *published, imu, gnss);
+        } else if (checks::air_ok(air)) {
+            a.start(t_s, imu, mag, gnss, air);
+        }
         return false;
     }
     return a.step(t_s, imu, mag, fix ? &gnss : nullptr);

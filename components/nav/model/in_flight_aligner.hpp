@@ -3,6 +3,10 @@
 // magnetometer calibration in its state, run from the truth-free start until its own covariance says that the
 // attitude, the sensor errors and the field error are known as well as a pre-flight fine alignment would give them;
 // then the navigation filters are started again from it (`Alignment`, as from the sensors' published alignment).
+// With the hand-over at the GNSS loss (variant keep_gnss_calibration; docs/navigation.md, "Keeping the GNSS
+// calibration") the same estimator runs through the whole GNSS-aided phase instead, from the truth-free start or from
+// the sensors' published alignment, and hands its attitude, sensor and field errors and their joint covariance to the
+// attitude filter at the loss (`handover()`); its alignment criteria then only raise the aligned flag.
 //
 // Why a joint filter: the paper's filters are a cascade (the attitude filter takes E_acc and p_n from the position
 // filter, the position filter takes the attitude as exact), so the heading and tilt information that the GNSS sees
@@ -16,9 +20,9 @@
 // Magnetometer (every mag_period_steps): B~ = R^T (B_model - B_dev) + E_mag,
 //   H = [R^T [(B_model - B_dev) x], 0, 0, 0, 0, I, -R^T].
 // GNSS fix: position (NED metres from the estimate) and velocity, H = [0 0 I ...; 0 I 0 ...], no lever arm.
-// Handed over (latched) at a GNSS fix once tilt and heading sigmas have been below their limits for hold_s, and not
+// Aligned (latched) at a GNSS fix once tilt and heading sigmas have been below their limits for hold_s, and not
 // before not_before_s (the calibrated scenarios hand over at the paper's t0, where its filters start from the
-// pre-flight alignment).
+// pre-flight alignment). Handed over at that moment, or at the GNSS loss (HandOver::kAtGnssLoss).
 #include <cstdint>
 #include <limits>
 
@@ -56,23 +60,39 @@ struct InFlightAlignerSettings {
     double not_before_s{-std::numeric_limits<double>::infinity()};  // no hand-over before this time
 };
 
-// Reads an `in_flight_alignment` section (every key optional; keys and ranges in in_flight_aligner.cpp).
-InFlightAlignerSettings parse_in_flight_alignment(const config::Config& c);
+// When the estimator hands over to the paper's filters: once aligned (the in-flight alignment), or at the GNSS loss
+// (keep_gnss_calibration: it runs through the whole GNSS-aided phase).
+enum class HandOver { kAtAlignment, kAtGnssLoss };
+
+// Reads an `in_flight_alignment` section (every key optional; keys and ranges in in_flight_aligner.cpp); a key not
+// given keeps its value in `base`.
+InFlightAlignerSettings parse_in_flight_alignment(const config::Config& c,
+                                                  const InFlightAlignerSettings& base = InFlightAlignerSettings{});
 
 class InFlightAligner {
 public:
     static constexpr int kN = 21;
     InFlightAligner() = default;
-    InFlightAligner(const InFlightAlignerSettings& s, double dt_s);
+    InFlightAligner(const InFlightAlignerSettings& s, double dt_s, HandOver mode = HandOver::kAtAlignment);
 
     // Truth-free start on the first step with a valid fix: coarse attitude from the specific force less w x v_tas
     // and the magnetometer, position and velocity from the fix, sensor errors zero.
     void start(double t_s, const ImuSample& imu, const MagSample& mag, const GnssSample& fix, const AirSample& air);
+    // Start from a pre-flight alignment (the sensors' published one) on the first step with a valid fix: attitude,
+    // sensor and field errors and their 1-sigma from it (the attitude sigma on every axis), position and velocity from
+    // the fix.
+    void start(double t_s, const Alignment& align, const ImuSample& imu, const GnssSample& fix);
     [[nodiscard]] bool started() const { return started_; }
 
     // One step after the start: propagation with this step's IMU sample, the magnetometer every mag_period_steps,
-    // the fix if there is one. True on the one step at which the alignment is handed over (then it stops).
+    // the fix if there is one. True on the one step at which the alignment is handed over (then it stops); with the
+    // hand-over at the GNSS loss never true (hand_over() ends it).
     bool step(double t_s, const ImuSample& imu, const MagSample& mag, const GnssSample* fix);
+    // Ends the estimator at the GNSS loss (HandOver::kAtGnssLoss): handed over from this step on.
+    void hand_over(double t_s);
+    [[nodiscard]] HandOver mode() const { return mode_; }
+    [[nodiscard]] bool aligned() const { return aligned_; }
+    [[nodiscard]] double t_aligned_s() const { return t_aligned_s_; }
     [[nodiscard]] bool handed_over() const { return handed_over_; }
     [[nodiscard]] double t_handed_over_s() const { return t_handed_over_s_; }
 
@@ -84,6 +104,9 @@ public:
     // The aligner's attitude as an attitude filter's output (nav_att publishes it until the hand-over): the angular
     // rate of its last propagation, the sensor and field errors, the NED-side attitude sigmas.
     [[nodiscard]] AttitudeEstimate estimate(std::uint64_t k, double t_s) const;
+    // The attitude filter's start at the GNSS loss: the estimates and the joint covariance of the attitude, gyro,
+    // magnetometer and field errors (nav_types.hpp).
+    [[nodiscard]] AttitudeHandover handover() const;
     [[nodiscard]] const Quat& q_nb() const { return q_nb_; }
 
 private:
@@ -91,11 +114,15 @@ private:
     void update_mag(const MagSample& mag);
     void update_fix(const GnssSample& fix);
     void inject(const filters::Vec<kN>& dx);
+    void start_common(double t_s, const GnssSample& fix);
 
     InFlightAlignerSettings s_{};
     double dt_s_{0.01};
+    HandOver mode_{HandOver::kAtAlignment};
     filters::Vec<kN> q_diag_{filters::Vec<kN>::Zero()};  // per-step process noise, from the settings and dt
     bool started_{false};
+    bool aligned_{false};
+    double t_aligned_s_{0.0};
     bool handed_over_{false};
     double t_handed_over_s_{0.0};
     double t_criteria_met_s_{0.0};
@@ -110,10 +137,9 @@ private:
 };
 
 // One step of a component that runs the aligner: starts it on the first step whose IMU, magnetometer and air data
-// samples pass the input checks with a valid fix, steps it after (a sample failing its check skips the step).
-// True on the hand-over step. nav_att and nav_pos both call it with the same samples, so both hand over at the same
-// step with the same alignment.
+// samples pass the input checks with a valid fix (from `published` when given: the sensors' pre-flight alignment),
+// steps it after (a sample failing its check skips the step). True on the hand-over step at the alignment.
 bool step_in_flight_aligner(InFlightAligner& a, double t_s, const ImuSample& imu, const MagSample& mag,
-                            const GnssSample& gnss, const AirSample& air);
+                            const GnssSample& gnss, const AirSample& air, const Alignment* published = nullptr);
 
 }  // namespace gdnav::nav

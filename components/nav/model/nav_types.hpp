@@ -37,6 +37,17 @@ struct Alignment {
     Vec3 b_dev_n_nT{Vec3::Zero()}, b_dev_sigma_nT{Vec3::Zero()};
     [[nodiscard]] bool valid() const { return q_nb.coeffs().norm() > 0.5; }
 };
+// The state a joint GNSS/INS estimator hands to the attitude filter (in_flight_aligner.hpp, AttitudeFilter::hand_over):
+// the estimates and the joint covariance of their errors, ordered [phi_n (attitude, NED side: R = exp([phi x]) R_hat),
+// dE_gyr, dE_mag, dB_dev], so that the correlations a turn builds between heading and field errors are kept.
+struct AttitudeHandover {
+    Quat q_nb{Quat::Identity()};
+    Vec3 w_nb_b_rps{Vec3::Zero()};
+    Vec3 gyr_err_rps{Vec3::Zero()};
+    Vec3 mag_err_nT{Vec3::Zero()};
+    Vec3 b_dev_n_nT{Vec3::Zero()};
+    Eigen::Matrix<double, 12, 12> p_err{Eigen::Matrix<double, 12, 12>::Zero()};
+};
 struct AirSample {
     double tas_mps{0.0};
     double aoa_rad{0.0};

@@ -1,6 +1,6 @@
 // In-flight fine alignment (docs/navigation.md, "In-flight fine alignment") in real gdnav runs of the calibrated
-// scenario #2, cut after the hand-over: nav_att and nav_pos, each running the aligner on its own samples, hand over at
-// the same step, in one process and in separate processes alike, with the same attitude estimates bit for bit; the
+// scenario #2, cut after the hand-over: nav_att runs the aligner and nav_pos follows it (gdnav/NavHandover); both hand
+// over at the same step, in one process and in separate processes alike, with the same attitude estimates bit for bit; the
 // published attitude does not jump at the hand-over (the attitude filter starts from the aligner's attitude); each
 // hand-over is logged once.
 #include <gtest/gtest.h>
