@@ -16,7 +16,6 @@
 #include <spdlog/spdlog.h>
 #include <yaml-cpp/yaml.h>
 
-#include "framework/direct_executor.hpp"
 #include "framework/lockstep.hpp"
 #include "framework/run_members.hpp"
 #include "dds/process/process_signals.hpp"
@@ -30,65 +29,6 @@
 namespace gdnav::runtime {
 
 namespace fs = std::filesystem;
-
-int run_direct(const RunConfig& rc, const ComponentRegistry& reg, bool progress, double* steps_per_s) {
-    auto comps = rc.build(reg);
-    DirectExecutor ex(std::move(comps), rc.info);
-    ex.set_faults(rc.faults, [&rc, &reg](const std::string& name) { return rc.build_one(reg, name); });
-    // An essential member killed by a scheduled fault ends the run at that step, as the clock does.
-    std::uint64_t abort_at = rc.info.steps;
-    std::string abort_reason;
-    for (const auto& f : rc.faults.faults())
-        if (f.kind == faults::Kind::Kill && f.from_step < abort_at &&
-            std::find(rc.essential.begin(), rc.essential.end(), f.target) != rc.essential.end()) {
-            abort_at = f.from_step;
-            abort_reason = "essential member '" + f.target + "' killed by a scheduled fault at step " +
-                           std::to_string(f.from_step);
-        }
-    install_stop_signal_handlers();
-    const double t0 = steady_now_s();
-    double next_log = t0 + 2.0;
-    const std::uint64_t done = ex.run(
-        [&](std::uint64_t k) {
-            if (abort_at < rc.info.steps && k >= abort_at) return false;
-            if (stop_requested()) return false;
-            if (!progress) return true;
-            const double now = steady_now_s();
-            if (now < next_log) return true;
-            next_log = now + 2.0;
-            const double sps = static_cast<double>(k) / (now - t0);
-            spdlog::info("step {}/{} ({:.0f}%), t = {:.1f} s, {:.0f} steps/s, {:.0f}x real time", k, rc.info.steps,
-                         100.0 * static_cast<double>(k) / static_cast<double>(rc.info.steps), rc.info.time_of(k), sps,
-                         sps * rc.info.dt_s);
-            return true;
-        },
-        abort_at < rc.info.steps ? 1 : 100);
-    if (done == abort_at && abort_at < rc.info.steps) {
-        spdlog::error("run aborted: {}", abort_reason);
-        if (!rc.out_dir.empty()) {
-            std::ofstream f(fs::path(rc.out_dir) / "clock_summary.yaml");
-            f << "completed: false\nsteps_done: " << done << "\nabort_reason: \"" << abort_reason
-              << "\"\ndead_members: []\nreproducible: true\n";
-        }
-        return kExitAborted;
-    }
-    if (done < rc.info.steps) {
-        spdlog::error("run interrupted by signal {} at step {}", stop_signal(), done);
-        return kExitInterrupted;
-    }
-    const double wall = steady_now_s() - t0;
-    const double sps = static_cast<double>(rc.info.steps) / std::max(wall, 1e-9);
-    if (steps_per_s) *steps_per_s = sps;
-    if (progress)
-        spdlog::info("run complete: {} steps in {:.2f} s ({:.0f} steps/s, {:.0f}x real time)", rc.info.steps, wall, sps,
-                     sps * rc.info.dt_s);
-    if (!rc.out_dir.empty()) {
-        std::ofstream f(fs::path(rc.out_dir) / "clock_summary.yaml");
-        f << "completed: true\nsteps_done: " << rc.info.steps << "\nwall_s: " << wall << "\nsteps_per_s: " << sps
-          << "\ndead_members: []\nreproducible: true\n";
-    }
-    return kExitOk;
-}
 
 namespace {
 

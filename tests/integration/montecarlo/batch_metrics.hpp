@@ -49,6 +49,21 @@ inline BatchFigures run_nav_batch(const std::string& tag, const std::string& sce
     return b;
 }
 
+// Prints the two batches run by run and their means, and checks (EXPECT) that every run of `cand` aligned and none
+// diverged (mean attitude error under 1 deg).
+inline void print_and_check_runs(const BatchFigures& base, const BatchFigures& cand, const std::string& cand_name) {
+    std::printf("run  attitude mean [deg]: aligned  %s | final horizontal [m]: aligned  %s\n", cand_name.c_str(),
+                cand_name.c_str());
+    for (std::size_t i = 0; i < cand.att_deg.size(); ++i) {
+        std::printf("%3zu  %28.3f %10.3f | %28.1f %10.1f\n", i, base.att_deg[i], cand.att_deg[i], base.hor_m[i],
+                    cand.hor_m[i]);
+        EXPECT_TRUE(cand.aligned[i]) << "run " << i << " never aligned";
+        EXPECT_LT(cand.att_deg[i], 1.0) << "run " << i << " diverged";
+    }
+    std::printf("mean %27.3f %10.3f | %28.1f %10.1f  (ratios %.3f, %.3f)\n", base.att_mean, cand.att_mean,
+                base.hor_mean, cand.hor_mean, cand.att_mean / base.att_mean, cand.hor_mean / base.hor_mean);
+}
+
 // The calibrated scenarios' aligned start: the paper's filters from the sensors' published pre-flight alignment on
 // the same runs (config/scenarios/paper2_calibrated.yaml).
 inline const std::vector<std::string> kAlignedStart = {

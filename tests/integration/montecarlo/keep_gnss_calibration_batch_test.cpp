@@ -20,14 +20,7 @@ TEST(KeepGnssCalibrationBatch, Scenario2CalibratedBeatsTheAlignedStartOn20Runs) 
     const BatchFigures kg =
         run_nav_batch("kgc_batch_variant", "paper2_calibrated", kRuns, {"--variant", "keep_gnss_calibration"});
     std::printf("paper2_calibrated, seed 1, runs 0-%d; metrics from t = 0\n", kRuns - 1);
-    std::printf("run  attitude mean [deg]: aligned  keep_gnss_calibration | final horizontal [m]: aligned  variant\n");
-    for (int i = 0; i < kRuns; ++i) {
-        std::printf("%3d  %28.3f %10.3f | %28.1f %10.1f\n", i, al.att_deg[i], kg.att_deg[i], al.hor_m[i], kg.hor_m[i]);
-        EXPECT_TRUE(kg.aligned[i]) << "run " << i << " never aligned";
-        EXPECT_LT(kg.att_deg[i], 1.0) << "run " << i << " diverged";
-    }
-    std::printf("mean %27.3f %10.3f | %28.1f %10.1f  (ratios %.3f, %.3f)\n", al.att_mean, kg.att_mean, al.hor_mean,
-                kg.hor_mean, kg.att_mean / al.att_mean, kg.hor_mean / al.hor_mean);
+    print_and_check_runs(al, kg, "keep_gnss_calibration");
     EXPECT_LE(kg.hor_mean, 135.0);
     EXPECT_LE(kg.att_mean, 0.9 * al.att_mean);
 }

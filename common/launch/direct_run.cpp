@@ -1,0 +1,84 @@
+// The direct layout (launch/launcher.hpp, run_direct): every component in this process, one thread, no transport.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <spdlog/spdlog.h>
+
+#include "dds/process/process_signals.hpp"
+#include "framework/direct_executor.hpp"
+#include "framework/lockstep.hpp"
+#include "launch/launcher.hpp"
+
+namespace gdnav::runtime {
+
+namespace fs = std::filesystem;
+
+namespace {
+// <out>/clock_summary.yaml of a direct run, in the clock's layout (docs/protocol.md §5): `head` (completed,
+// steps_done and what goes with them), then the lines every direct run has in common: no member can die or rejoin
+// and nothing runs free, so the run is reproducible.
+void write_direct_summary(const RunConfig& rc, const std::string& head) {
+    if (rc.out_dir.empty()) return;
+    std::ofstream f(fs::path(rc.out_dir) / "clock_summary.yaml");
+    f << head << "dead_members: []\nreproducible: true\n";
+}
+}  // namespace
+
+int run_direct(const RunConfig& rc, const ComponentRegistry& reg, bool progress, double* steps_per_s) {
+    auto comps = rc.build(reg);
+    DirectExecutor ex(std::move(comps), rc.info);
+    ex.set_faults(rc.faults, [&rc, &reg](const std::string& name) { return rc.build_one(reg, name); });
+    // An essential member killed by a scheduled fault ends the run at that step, as the clock does.
+    std::uint64_t abort_at = rc.info.steps;
+    std::string abort_reason;
+    for (const auto& f : rc.faults.faults())
+        if (f.kind == faults::Kind::Kill && f.from_step < abort_at &&
+            std::find(rc.essential.begin(), rc.essential.end(), f.target) != rc.essential.end()) {
+            abort_at = f.from_step;
+            abort_reason = "essential member '" + f.target + "' killed by a scheduled fault at step " +
+                           std::to_string(f.from_step);
+        }
+    install_stop_signal_handlers();
+    const double t0 = steady_now_s();
+    double next_log = t0 + 2.0;
+    const std::uint64_t done = ex.run(
+        [&](std::uint64_t k) {
+            if (abort_at < rc.info.steps && k >= abort_at) return false;
+            if (stop_requested()) return false;
+            if (!progress) return true;
+            const double now = steady_now_s();
+            if (now < next_log) return true;
+            next_log = now + 2.0;
+            const double sps = static_cast<double>(k) / (now - t0);
+            spdlog::info("step {}/{} ({:.0f}%), t = {:.1f} s, {:.0f} steps/s, {:.0f}x real time", k, rc.info.steps,
+                         100.0 * static_cast<double>(k) / static_cast<double>(rc.info.steps), rc.info.time_of(k), sps,
+                         sps * rc.info.dt_s);
+            return true;
+        },
+        abort_at < rc.info.steps ? 1 : 100);
+    if (done == abort_at && abort_at < rc.info.steps) {
+        spdlog::error("run aborted: {}", abort_reason);
+        write_direct_summary(rc, "completed: false\nsteps_done: " + std::to_string(done) + "\nabort_reason: \"" +
+                                     abort_reason + "\"\n");
+        return kExitAborted;
+    }
+    if (done < rc.info.steps) {
+        spdlog::error("run interrupted by signal {} at step {}", stop_signal(), done);
+        return kExitInterrupted;
+    }
+    const double wall = steady_now_s() - t0;
+    const double sps = static_cast<double>(rc.info.steps) / std::max(wall, 1e-9);
+    if (steps_per_s) *steps_per_s = sps;
+    if (progress)
+        spdlog::info("run complete: {} steps in {:.2f} s ({:.0f} steps/s, {:.0f}x real time)", rc.info.steps, wall, sps,
+                     sps * rc.info.dt_s);
+    std::ostringstream head;
+    head << "completed: true\nsteps_done: " << rc.info.steps << "\nwall_s: " << wall << "\nsteps_per_s: " << sps << "\n";
+    write_direct_summary(rc, head.str());
+    return kExitOk;
+}
+
+}  // namespace gdnav::runtime
