@@ -11,6 +11,7 @@
 #include "launch/pki/pki.hpp"
 #include "launch/pki/pki_identities.hpp"
 #include "dds/security/security.hpp"
+#include "launch/pki/identity_check.hpp"
 
 namespace gdnav::app {
 

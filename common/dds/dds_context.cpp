@@ -39,10 +39,8 @@ DdsContext::DdsContext(int domain_id, const std::filesystem::path& profile_file,
         throw std::runtime_error("DDS profile file " + profile_file.string() + " has no participant profile '" +
                                  kParticipantProfile + "'");
     pq.name(name);
-    if (!security_dir.empty()) {
-        security::check_identity(security_dir, identity);
-        security::apply(pq, security_dir, identity);
-    }
+    // The material was checked by the process that started the run (launch/pki/identity_check.hpp).
+    if (!security_dir.empty()) security::apply(pq, security_dir, identity);
     const auto user_data = announcement(members);
     pq.user_data().data_vec(std::vector<eprosima::fastrtps::rtps::octet>(user_data.begin(), user_data.end()));
     // The listener gets the discovery of participants only: every entity status goes to the entity's own listener or

@@ -22,6 +22,7 @@
 #include "dds/security/security.hpp"
 #include "launch/children.hpp"
 #include "launch/domain_lock.hpp"
+#include "launch/pki/identity_check.hpp"
 #include "launch/member_process.hpp"
 #include "launch/run_outcome.hpp"
 #include "launch/shm_cleanup.hpp"

@@ -29,10 +29,8 @@ std::string process_identity(const std::vector<std::string>& members);
 // "O=gdnav,CN=NAME": the RFC 2253 form of the certificate subject /CN=NAME/O=gdnav, as a permissions grant names it.
 std::string subject_name(const std::string& identity);
 
-// Checks, before anything starts, that DIR holds a usable identity: the CA, the identity's certificate signed by it
-// and valid now, the key matching the certificate, governance and permissions documents signed by the CA, and a
-// grant for the identity. Throws config::ConfigError with one line naming the file and the problem.
-void check_identity(const std::filesystem::path& dir, const std::string& identity);
+// The check of the material itself (certificates, keys, signed documents) is OpenSSL's and the launch layer's
+// (launch/pki/identity_check.hpp): the dds layer, which the client library links, does not need OpenSSL.
 
 // Sets the participant properties that turn the built-in security plugins on for `identity`.
 void apply(eprosima::fastdds::dds::DomainParticipantQos& qos, const std::filesystem::path& dir,

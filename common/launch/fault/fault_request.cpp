@@ -12,6 +12,7 @@
 #include "config/config.hpp"
 #include "dds/dds_context.hpp"
 #include "dds/security/security.hpp"
+#include "launch/pki/identity_check.hpp"
 #include "framework/lockstep.hpp"
 #include "framework/run_config.hpp"
 #include "framework/topic_types.hpp"
@@ -48,6 +49,7 @@ std::string fault_entry_yaml(const FaultRequestSpec& a) {
 
 int send_fault_request(const FaultRequestSpec& a, const std::string& entry) {
     runtime::register_gdnav_topics();
+    if (!a.security.empty()) runtime::security::check_identity(a.security, runtime::security::kOperatorIdentity);
     runtime::DdsContext dds(a.domain, runtime::config_dir() / "dds/gdnav_profiles.xml", "gdnav.fault", a.security,
                             runtime::security::kOperatorIdentity);
     DataWriter* w = dds.writer(topics::kFaultRequest, runtime::message_ops<msg::FaultRequest>(),
