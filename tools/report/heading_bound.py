@@ -24,7 +24,8 @@ these sensors could know. It is favourable to the filter in what it leaves out (
 the vertical channel, the magnetometer's soft iron), so the true limit is above it. With --batch, the heading error
 |psi_hat - psi| at the GNSS loss of each run of the batches (run.h5 error/yaw_rad) is printed beside it (median, rms,
 90th percentile; runs whose mean attitude error is above 20 deg left out as diverged). With --png: the sigma against
-time with the GNSS loss marked.
+time with the GNSS loss marked. The whole run, tilt and heading, after the loss too: attitude_bound.py, which imports
+this module's input and batch helpers (they raise InputError; each tool prints it as its own one line).
 Debian's python3-h5py, -numpy, -yaml, -matplotlib.
 """
 import argparse
@@ -40,23 +41,37 @@ DEG = 180.0 / math.pi
 G = 9.80665
 
 
+class InputError(Exception):
+    """Bad input (a missing or malformed file or folder, a bad option): the tools print it as one line and exit."""
+
+
 def fail(msg):
     sys.exit(f"heading_bound: {msg}")
 
 
 def load_yaml(path, what):
     if not os.path.isfile(path):
-        fail(f"'{path}' not found ({what})")
-    with open(path) as fh:
-        return yaml.safe_load(fh)
+        raise InputError(f"'{path}' not found ({what})")
+    try:
+        with open(path) as fh:
+            return yaml.safe_load(fh)
+    except yaml.YAMLError as e:
+        raise InputError(f"'{path}' is not valid YAML ({what}): {str(e).splitlines()[0]}") from None
 
 
-def sensor_figures(config_dir):
-    """GNSS, accelerometer and gyroscope baseline figures from config/sensors (SI)."""
-    gnss = load_yaml(os.path.join(config_dir, "sensors/gnss/baseline.yaml"), "GNSS grade")
-    acc = load_yaml(os.path.join(config_dir, "sensors/accelerometers/baseline.yaml"), "accelerometer grade")
-    gyr = load_yaml(os.path.join(config_dir, "sensors/gyroscopes/baseline.yaml"), "gyroscope grade")
-    mag = load_yaml(os.path.join(config_dir, "sensors/magnetometers/baseline.yaml"), "magnetometer grade")
+def sensor_figures(config_dir, grades=None):
+    """GNSS, accelerometer, gyroscope and magnetometer figures from config/sensors (SI); GRADES maps a group
+    (gnss, accelerometers, gyroscopes, magnetometers) to its grade, baseline where not given."""
+    grades = grades or {}
+
+    def grade(group, what):
+        name = grades.get(group, "baseline")
+        return load_yaml(os.path.join(config_dir, f"sensors/{group}/{name}.yaml"), f"{what} grade '{name}'")
+
+    gnss = grade("gnss", "GNSS")
+    acc = grade("accelerometers", "accelerometer")
+    gyr = grade("gyroscopes", "gyroscope")
+    mag = grade("magnetometers", "magnetometer")
     field = load_yaml(os.path.join(config_dir, "earth/magnetic_wisconsin.yaml"), "magnetic model")
     b_h = math.hypot(*field["b_n_lat_min_lon_min_nT"][:2])
     return {
@@ -72,7 +87,7 @@ def sensor_figures(config_dir):
 def truth_of(run_dir):
     path = os.path.join(run_dir, "run.h5")
     if not os.path.isfile(path):
-        fail(f"'{path}' not found (--run takes a run folder of gdnav run or montecarlo)")
+        raise InputError(f"'{path}' not found (--run takes a run folder of gdnav run or montecarlo)")
     with h5py.File(path, "r") as f:
         tr = f["truth"][...]
     meta = load_yaml(os.path.join(run_dir, "metrics.yaml"), "the run's metrics")
@@ -130,10 +145,12 @@ def heading_sigma(tr, t_gnss_s, s, heading0_rad, tilt0_rad, gyro_noise):
     return np.array(times), np.array(sig)
 
 
-def heading_errors_at_loss(batch, diverged_deg=20.0):
+def complete_runs(batch):
+    """(run folder, its metrics) of each run of a montecarlo batch folder with run.h5 and a complete metrics.yaml,
+    in run order."""
     root = os.path.join(batch, "runs")
     if not os.path.isdir(root):
-        fail(f"'{batch}' has no runs/ folder (not a gdnav montecarlo batch)")
+        raise InputError(f"'{batch}' has no runs/ folder (not a gdnav montecarlo batch)")
     out = []
     for name in sorted(os.listdir(root)):
         run = os.path.join(root, name)
@@ -141,18 +158,39 @@ def heading_errors_at_loss(batch, diverged_deg=20.0):
         if not (os.path.isfile(mfile) and os.path.isfile(hfile)):
             continue
         m = load_yaml(mfile, "metrics")
-        if m.get("complete") is not True or m["signals"]["rot_rad"]["mean"] * DEG > diverged_deg:
-            continue
-        with h5py.File(hfile, "r") as f:
-            e = f["error"][...]
-        i = int(np.argmin(np.abs(e["t_s"] - float(m["t_gnss_s"]))))
-        out.append(abs(e["yaw_rad"][i]) * DEG)
+        if isinstance(m, dict) and m.get("complete") is True:
+            out.append((run, m))
+    return out
+
+
+def diverged(m, diverged_deg=20.0):
+    """A run whose mean attitude error is above DIVERGED_DEG: the filter lost the attitude."""
+    return m["signals"]["rot_rad"]["mean"] * DEG > diverged_deg
+
+
+def heading_error_at_loss_deg(run, m):
+    """|psi_hat - psi| [deg] at the run.h5 row nearest the GNSS loss."""
+    with h5py.File(os.path.join(run, "run.h5"), "r") as f:
+        e = f["error"][...]
+    i = int(np.argmin(np.abs(e["t_s"] - float(m["t_gnss_s"]))))
+    return abs(e["yaw_rad"][i]) * DEG
+
+
+def heading_errors_at_loss(batch, diverged_deg=20.0):
+    out = [heading_error_at_loss_deg(run, m) for run, m in complete_runs(batch) if not diverged(m, diverged_deg)]
     if not out:
-        fail(f"'{batch}' has no complete, non-diverged run with run.h5")
+        raise InputError(f"'{batch}' has no complete, non-diverged run with run.h5")
     return np.array(out)
 
 
 def main():
+    try:
+        run_main()
+    except InputError as e:
+        fail(str(e))
+
+
+def run_main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--run", required=True, help="run folder whose true trajectory is used")
     ap.add_argument("--batch", action="append", default=[], help="LABEL=DIR: heading errors at the loss")
