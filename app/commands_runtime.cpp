@@ -1,7 +1,10 @@
 // Subcommands of the runtime: run, component, clock, validate, list, bench.
 #include "commands.hpp"
 
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
+#include <stdexcept>
 
 #include <spdlog/spdlog.h>
 
@@ -254,9 +257,38 @@ CLI::App* add_validate_command(CLI::App& app, CliContext& ctx, CommandRunner& ru
     return sub;
 }
 
+// The topic graph of a scenario's components (framework/graph.hpp, graph_dot), as DOT text or, through Graphviz's
+// `dot`, as SVG.
+int print_topic_graph(const std::string& format, const std::string& scenario, const ComponentRegistry& reg) {
+    const RunConfig rc = RunConfig::load(resolve_scenario(scenario::scenario_alias(scenario)));
+    const auto comps = rc.build(reg);
+    std::vector<Component*> raw;
+    for (const auto& c : comps) raw.push_back(c.get());
+    const std::string dot = graph_dot(raw, "gdnav topics, scenario " + scenario + " (dashed: the previous step's)");
+    if (format == "dot") {
+        std::fputs(dot.c_str(), stdout);
+        return 0;
+    }
+    if (std::system("command -v dot > /dev/null 2>&1") != 0)
+        throw std::runtime_error("gdnav list --graph svg needs Graphviz's `dot` (apt-get install graphviz); "
+                                 "--graph dot prints the text");
+    std::fflush(stdout);
+    FILE* p = popen("dot -Tsvg", "w");
+    if (p == nullptr) throw std::runtime_error("gdnav list --graph svg: cannot start `dot`");
+    std::fputs(dot.c_str(), p);
+    if (pclose(p) != 0) throw std::runtime_error("gdnav list --graph svg: `dot` failed");
+    return 0;
+}
+
 CLI::App* add_list_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
-    auto* sub = app.add_subcommand("list", "list component types, topics and scenarios");
-    run = [&ctx]() {
+    auto* sub = app.add_subcommand("list", "list component types, topics and scenarios, or draw the topic graph");
+    auto graph = std::make_shared<std::string>();
+    auto graph_scenario = std::make_shared<std::string>("default");
+    sub->add_option("--graph", *graph, "print the topic graph of --scenario instead: dot (Graphviz text) | svg")
+        ->check(CLI::IsMember({"dot", "svg"}));
+    sub->add_option("--scenario", *graph_scenario, "scenario of --graph (default: default)");
+    run = [&ctx, graph, graph_scenario]() {
+        if (!graph->empty()) return print_topic_graph(*graph, *graph_scenario, ctx.registry);
         std::printf("component types:\n");
         for (const auto& t : ctx.registry.types()) std::printf("  %-22s %s\n", t.c_str(), ctx.registry.description(t).c_str());
         std::printf("topics:\n");

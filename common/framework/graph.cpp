@@ -49,6 +49,31 @@ Graph build_graph(const std::vector<Component*>& components) {
     return g;
 }
 
+std::string graph_dot(const std::vector<Component*>& components, const std::string& title) {
+    std::map<std::string, std::string> owner;  // topic -> producing component
+    for (const Component* c : components)
+        for (const OutputBase* o : c->outputs()) owner[o->topic()] = c->name();
+    std::set<std::string> nodes, edges;
+    for (const Component* c : components) {
+        nodes.insert("  \"" + c->name() + "\";\n");
+        for (const InputBase* in : c->inputs()) {
+            const auto it = owner.find(in->topic());
+            if (it == owner.end()) continue;  // produced outside this set (an external member)
+            std::string topic = in->topic();
+            if (topic.rfind("gdnav/", 0) == 0) topic = topic.substr(6);
+            const bool previous = in->lag() == Lag::Previous;
+            edges.insert("  \"" + it->second + "\" -> \"" + c->name() + "\" [label=\"" + topic +
+                         (previous ? " (k-1)\", style=dashed" : "\"") + "];\n");
+        }
+    }
+    std::string dot = "digraph gdnav_topics {\n  label=\"" + title +
+                      "\";\n  labelloc=t;\n  rankdir=LR;\n  node [shape=box, fontname=Helvetica];\n"
+                      "  edge [fontname=Helvetica, fontsize=9];\n";
+    for (const auto& n : nodes) dot += n;
+    for (const auto& e : edges) dot += e;
+    return dot + "}\n";
+}
+
 std::string join_topics(const std::vector<std::string>& topics) {
     std::string s;
     for (const auto& t : topics) s += (s.empty() ? "" : ",") + t;
