@@ -1,5 +1,5 @@
 #pragma once
-// The paper's two Monte Carlo scenarios as scenario generators (models-physics.md §6 and §8).
+// The paper's two Monte Carlo scenarios as scenario generators (docs/montecarlo.md, "Scenarios #1 and #2").
 //
 //   generator: {name: paper_scenario1}          # or paper_scenario2; options below
 //   run: {seed: 1, t0_s: -50, duration_s: 3850, ...}

@@ -2,7 +2,7 @@
 // The one EKF toolkit of gdnav: fixed-size Eigen types templated on the state size N and the measurement size M,
 // discrete propagation and Joseph-form update. Every navigation filter (air data, attitude, position) uses it.
 //
-// Discrete model used by all filters (as in the reference, models-nav.md §2.1):
+// Discrete model used by all filters (as in the reference; docs/navigation.md, "EKF toolkit"):
 //   propagate: A = df/dx at x+(k-1);  Phi = exp(A dt) ~ I + A dt + (A dt)^2/2 + ... (truncated Taylor series);
 //              x-(k) = x+(k-1) + dt f(x+(k-1))  (forward Euler on the non-linear f, done by the caller);
 //              P-(k) = Phi P+(k-1) Phi^T + Q    (Q is the discrete per-step covariance)

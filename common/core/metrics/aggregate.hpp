@@ -1,11 +1,13 @@
 #pragma once
-// Aggregated metrics over the runs of a batch (paper §"Navigation System Error", reference models-physics.md §9.3).
+// Aggregated metrics over the runs of a batch (paper §"Navigation System Error"; docs/montecarlo.md, "Aggregation and
+// report").
 // Each per-run metric (the mean, std, smax and final value of every error signal, the distance since t_GNSS and the
 // final errors in % of it) is aggregated across runs into
 //   mean  = (1/R) sum v_r,   std = sqrt((1/R) sum (v_r - mean)^2)   (population std, as the paper),
 //   max   = the v_r of largest |v_r|, sign kept.
 // For the per-run "max" metric the mean and std are those of |smax_r| and the max is the signed smax of the signed
-// values (reference §9.3). Non-finite values (e.g. a percentage with zero distance) are skipped; n counts the rest.
+// values (as the reference's aggregation code). Non-finite values (e.g. a percentage with zero distance) are
+// skipped; n counts the rest.
 #include <array>
 #include <cstdint>
 #include <string>

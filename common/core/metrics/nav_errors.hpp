@@ -1,6 +1,6 @@
 #pragma once
 // Navigation system errors (NSE) of one step: estimate minus truth, with the conventions of the paper and of the
-// reference's output code (models-physics.md §9.1).
+// reference's output code (docs/montecarlo.md, "nav_recorder: errors, online metrics and files").
 //
 //   attitude   Euler 3-2-1 errors of the estimated and true q_nb: yaw and bank errors wrapped to (-pi, pi];
 //              rotation angle |Delta r| = |log(q_true^-1 (x) q_est)| in [0, pi]  (the norm of the rotation vector)
@@ -13,8 +13,8 @@
 //              relative to the true ground-track bearing chi = atan2(v_E, v_N):
 //                e_cross = e_E cos chi - e_N sin chi   (> 0: the estimate lies to the right of the true track)
 //                e_along = e_N cos chi + e_E sin chi   (> 0: the estimate lies ahead)
-//              i.e. e_hor sin(a) and e_hor cos(a) with a = atan2(e_E, e_N) - chi, as §9.1. (The reference's
-//              aggregation code swaps the two in its tables, §9.3 note b; here each is what its name says.)
+//              i.e. e_hor sin(a) and e_hor cos(a) with a = atan2(e_E, e_N) - chi, as the reference. (The reference's
+//              aggregation code swaps the two in its tables; here each is what its name says.)
 // Units: SI (rad, m, m/s, K). Frames: N = local NED.
 #include "earth/wgs84.hpp"
 #include "math/rotation.hpp"

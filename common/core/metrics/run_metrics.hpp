@@ -2,10 +2,10 @@
 // Per-run ("trajectory") metrics, computed online at every navigation step (100 Hz):
 //   for each error signal of nav_errors.hpp: mean, population std, smax (signed sample of largest |x|) and final
 //   value over the steps with t in [t_start, t_end] (t_start = 0: the initial transient t < 0 is discarded, as the
-//   reference §9.2), and
+//   reference does; docs/montecarlo.md, "nav_recorder: errors, online metrics and files"), and
 //   the ground distance flown since the GNSS loss, D = integral from t_GNSS of sqrt(v_N^2 + v_E^2) dt of the TRUE
 //   ground velocity (trapezoidal rule over the steps at or after t_GNSS; the reference's code starts it at
-//   t = 1 s by an index mistake, §9.3 note a — not repeated here).
+//   t = 1 s by an index mistake, same section — not repeated here).
 // Final horizontal, cross- and along-track errors are also reported as a percentage of D (100 e / D), with D the
 // distance flown up to t_end (the last step that had every estimate), so a final error is never divided by distance
 // flown after it.

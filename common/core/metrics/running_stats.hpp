@@ -1,5 +1,6 @@
 #pragma once
-// Online statistics of one error signal x_1 .. x_n, updated sample by sample (reference models-physics.md §9.2):
+// Online statistics of one error signal x_1 .. x_n, updated sample by sample, as the reference's per-run metrics
+// (docs/montecarlo.md, "nav_recorder: errors, online metrics and files"):
 //   mean  = (1/n) sum x_i
 //   std   = sqrt((1/n) sum (x_i - mean)^2)        population std (divides by n, as the paper)
 //   smax  = the x_i of largest |x_i|, sign kept    (the first one on ties)

@@ -1,6 +1,6 @@
 #pragma once
-// Autopilot: the four-channel PID control law of the reference (models-physics.md §7), closed on the navigation
-// estimates.
+// Autopilot: the four-channel PID control law of the reference (docs/guidance-control.md, "Control"), closed on the
+// navigation estimates.
 //
 // Inputs  (every 10-ms step k): GuidanceOutput (modes + SI targets), ControlEstimates (navigation output)
 // Output  (every step):         ControlOutput throttle in [0, 1]; elevator, aileron, rudder deflections [rad]

@@ -1,5 +1,5 @@
 #pragma once
-// The discrete PID and the set-point ramp filter of the reference autopilot (models-physics.md §7).
+// The discrete PID and the set-point ramp filter of the reference autopilot (docs/guidance-control.md, "Control").
 //
 // DiscretePid, one call per control step (dt = control period), gains per step:
 //   e_k   = error (target - measured)

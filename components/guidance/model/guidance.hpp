@@ -1,5 +1,5 @@
 #pragma once
-// Guidance: turns a Mission into control targets, one operation at a time (reference models-physics.md §6).
+// Guidance: turns a Mission into control targets, one operation at a time (docs/guidance-control.md, "Guidance").
 //
 // Input  (every 10-ms step, after navigation):  t_s [s], NavState est (navigation estimates, SI)
 // Output (every step):                          GuidanceOutput, the content of IDL topic GuidanceTargets:

@@ -1,5 +1,5 @@
 #pragma once
-// A mission: the ordered list of guidance operations of one flight (reference models-physics.md §6).
+// A mission: the ordered list of guidance operations of one flight (docs/guidance-control.md, "Guidance").
 //
 // Each Operation sets a mode and an SI target for each of the four control channels (gnc::ChannelTargets) and a
 // Trigger that ends it. The mission ends when the last operation's trigger fires or when t >= t_end_s.
@@ -73,7 +73,8 @@ struct Mission {
 // is not a valid enumerator, a non-finite target or trigger value, or an elapsed trigger that is not positive.
 void validate(const Mission& mission);
 
-// Initial flight condition implied by operation 0 (used to set up the initial state, §5.5): available when
+// Initial flight condition implied by operation 0 (used to set up the initial trimmed state, docs/physics.md,
+// "Trim"): available when
 // operation 0 holds an airspeed, a pressure altitude and a ground bearing, as in both scenarios.
 struct InitialFlight {
     double airspeed_mps{0.0};

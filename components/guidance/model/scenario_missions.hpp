@@ -1,5 +1,6 @@
 #pragma once
-// The missions of the paper's two scenarios, built from their random draws (reference models-physics.md §6, §8).
+// The missions of the paper's two scenarios, built from their random draws (docs/guidance-control.md, "Scenario
+// missions").
 //
 // Draws (all from the caller's stream, in this order; N = standard normal, bearings U{-179..180} integer deg):
 //   1 chi_ini;  2 chi_end, redrawn until |wrap(chi_end - chi_ini)| >= 10 deg;

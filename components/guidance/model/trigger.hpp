@@ -1,5 +1,5 @@
 #pragma once
-// Evaluation of an operation's trigger on the navigation estimate (reference models-physics.md §6).
+// Evaluation of an operation's trigger on the navigation estimate (docs/guidance-control.md, "Guidance").
 //
 // Crossing triggers (pressure_altitude, altitude, path_angle, airspeed): at the start of the operation the sign
 // s0 = [measured >= target] is stored; the trigger fires at the first evaluation where [measured >= target] != s0.

@@ -1,5 +1,5 @@
 #pragma once
-// Air data filter (paper "Air Data Filter"; reference filter_air02, models-nav.md §3.1).
+// Air data filter (paper "Air Data Filter"; docs/navigation.md "Air data filter").
 //
 // State (9):  x = [v_tas, aoa, aos, T, Hp, roc, v_tas_dot, aoa_dot, aos_dot]        (m/s, rad, rad, K, m, m/s, ...)
 // Inputs:     AirSample (Pitot TAS, AOA and AOS vanes), AtmSample (static pressure p, outside air temperature T)

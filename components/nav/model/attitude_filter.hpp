@@ -1,5 +1,5 @@
 #pragma once
-// Attitude filter (paper "Attitude Filter"; reference filter_att02/03/04, models-nav.md §4). Model, observation
+// Attitude filter (paper "Attitude Filter"; docs/navigation.md "Attitude filter"). Model, observation
 // equations and Jacobians: attitude_model.hpp. A plain additive EKF on 16 states with the quaternion as 4 raw
 // components, renormalised after the prediction and after the update (reference formulation, kept so results are
 // comparable with the paper; the covariance is not projected).
@@ -13,8 +13,8 @@
 // only the coupling term of the specific-force observation differs (att::coupling_velocity_n).
 // Variant `attitude.filter` (optional, default additive): additive (above, the paper's) | error_state (the
 // multiplicative error-state EKF of eskf_attitude.hpp on the same nominal state, model and observations).
-// Tuning (config/nav/tuning.yaml, `attitude`): Q and R as the reference "configuration #4" (models-nav.md §4.4),
-// initialisation as nav_init.hpp.
+// Tuning (config/nav/tuning.yaml, `attitude`): Q and R as the reference "configuration #4" (docs/navigation.md
+// "Attitude filter"), initialisation as nav_init.hpp.
 // Input checks (input_checks.hpp): an ImuSample (rows gyro + accelerometer) or MagSample (rows magnetometer) that is
 //   non-finite or out of range is rejected and counted, and the update uses the other sample's rows only (propagate
 //   only when both are rejected). A rejected previous PositionEstimate (p_n source) is replaced by the last good one

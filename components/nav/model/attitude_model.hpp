@@ -1,6 +1,6 @@
 #pragma once
-// State, observation model and Jacobians of the attitude filter (paper "Attitude Filter"; reference filter_att02,
-// models-nav.md §4). Kept apart from the filter class so the Jacobian tests can exercise them directly.
+// State, observation model and Jacobians of the attitude filter (paper "Attitude Filter"; docs/navigation.md
+// "Attitude filter"). Kept apart from the filter class so the Jacobian tests can exercise them directly.
 //
 // State (16, additive, quaternion as a raw 4-vector):
 //   x = [q_nb (0..3), w_nb_b (4..6), E_gyr (7..9), E_mag (10..12), B_dev_n (13..15)],  B_dev = B_model - B_true

@@ -1,6 +1,6 @@
 #pragma once
 // GNSS-denied reconstruction of ground velocity, wind, altitude and horizontal position (paper "Position Filter"
-// and "Comparison with Other Navigation Algorithms"; reference filter_pos01B/02B/02C/02D/03B, models-nav.md §5.2, §7).
+// and "Comparison with Other Navigation Algorithms"; docs/navigation.md "Position filter").
 // Pure functions of the previous denied state and the current air data, attitude and specific-force estimates.
 //
 // Horizontal rules (velocity):

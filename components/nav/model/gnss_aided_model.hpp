@@ -1,5 +1,5 @@
 #pragma once
-// Model of the GNSS-aided position filter (reference filter_gps01, models-nav.md §5.1): a dual-rate EKF.
+// Model of the GNSS-aided position filter (docs/navigation.md "Position filter"): a dual-rate EKF.
 //
 // State (12): x = [lon, lat, h, v_n (3), f_ib_b (3), E_acc (3)]   (rad, rad, m, m/s, m/s^2, m/s^2)
 // State equations (q = current attitude estimate, an input):

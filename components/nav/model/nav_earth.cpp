@@ -59,7 +59,7 @@ double H_from_h(double h) { return ge::geopotential_from_geometric(h); }
 double h_from_H(double hg) { return ge::geometric_from_geopotential(hg); }
 
 // The filter's onboard WMM (1 Jan 2018, 3000 m) at the four corners of the area around lon 270..271 deg,
-// lat 44..45 deg (models-nav.md §9), interpolated by the shared model.
+// lat 44..45 deg (docs/navigation.md "Onboard Earth/atmosphere"), interpolated by the shared model.
 Vec3 magnetic_model_n(double lon, double lat) {
     static const ge::MagneticModel model([] {
         ge::MagneticCorners c;

@@ -5,7 +5,8 @@
 //   WGS84 radii N, M; normal gravity g(lat, h) (Somigliana + altitude terms) with derivatives; Earth rate,
 //   transport rate, Coriolis; ISA/INSA p(Hp), Hp(p), dp/dHp, dT, H(Hp, dT, dp), dp(H, Hp, dT); spherical H <-> h.
 //   Onboard magnetic model: the shared bilinear MagneticModel with the filter's own copy of the four WMM corner
-//   values (models-nav.md §9) — an onboard model is by nature separate from the simulated truth's.
+//   values (docs/navigation.md "Onboard Earth/atmosphere") — an onboard model is by nature separate from the
+//   simulated truth's.
 #include <Eigen/Core>
 
 #include "atmosphere/insa.hpp"
@@ -15,7 +16,7 @@ namespace gdnav::nav::earth {
 
 using Vec3 = Eigen::Vector3d;
 
-// Constants: the shared toolkits' (models-nav.md §0 values).
+// Constants: the shared toolkits' (docs/physics.md "Constants").
 inline constexpr double kA_m = ::gdnav::earth::wgs84::kA_m;
 inline constexpr double kF = ::gdnav::earth::wgs84::kF;
 inline constexpr double kB_m = ::gdnav::earth::wgs84::kB_m;

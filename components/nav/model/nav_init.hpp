@@ -1,10 +1,10 @@
 #pragma once
-// Initial estimates of the attitude and position filters (models-nav.md §6).
+// Initial estimates of the attitude and position filters (docs/navigation.md "Initialisation, `init.mode`").
 //
 // Two modes, chosen by `init.mode` in each filter's tuning section:
 //  * alignment (the paper's runs): the filters start from the pre-flight fine alignment the sensors publish with
-//      their samples (ImuSample / MagSample align_*; emulated with the reference's error model, models-nav.md §6 and
-//      components/sensors/model/alignment.hpp): q_nb, E_gyr, E_acc, E_mag, B_dev and their 1-sigma. The attitude
+//      their samples (ImuSample / MagSample align_*; emulated with the reference's error model,
+//      docs/sensors.md "Pre-flight fine alignment"): q_nb, E_gyr, E_acc, E_mag, B_dev and their 1-sigma. The attitude
 //      P0 is the reference's fixed 1e-8 per quaternion component (`init.alignment.q_p0`); 0 uses the published
 //      attitude sigma instead. No truth is read.
 //  * measurements (no alignment available): everything comes from the first measurements and the first GNSS fix.

@@ -1,6 +1,5 @@
 #pragma once
-// Position filter (paper "Position Filter"; reference filter_gps01 + filter_pos + pos02B and the comparison
-// variants, models-nav.md §5, §7, §8).
+// Position filter (paper "Position Filter" and its comparison variants; docs/navigation.md "Position filter").
 //
 // Inputs per step k: ImuSample (accelerometer f~), GnssSample (valid at 1 Hz while signals exist), the
 //   AirDataEstimate and AttitudeEstimate of the same step k.

@@ -1,6 +1,7 @@
 #pragma once
-// Air data sensors (reference models-nav.md section 1.5; paper, "Sensors"): Pitot tube (TAS), angle-of-attack and
-// sideslip vanes, barometer (outside static pressure) and thermometer (outside air temperature). Each one only has
+// Air data sensors (docs/sensors.md, "Air data and atmospheric"; paper, "Sensors"): Pitot tube (TAS),
+// angle-of-attack and sideslip vanes, barometer (outside static pressure) and thermometer (outside air temperature).
+// Each one only has
 //
 //   y~ = y + B0 nu_0 + sigma nu_k        nu_0 ~ N(0,1) once per run, nu_k ~ N(0,1) per sample,
 //

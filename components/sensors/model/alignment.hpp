@@ -1,16 +1,16 @@
 #pragma once
-// Pre-flight fine alignment, emulated (models-nav.md §6). The reference starts its filters at t0 from a
-// "fine-alignment-like" state: the true values plus small random errors, once per run. We model that alignment as
-// a product of the sensor suite, so the navigation filters start from what the sensors publish and never read the
-// truth: sensors_inertial publishes the attitude and the gyro/accelerometer full errors at t0, sensors_magnetic the
-// magnetometer full error and the magnetic model deviation, each with its 1-sigma (ImuSample / MagSample `align_*`).
-// A hardware-in-the-loop user replaces them with the outputs of a real alignment.
+// Pre-flight fine alignment, emulated (docs/sensors.md, "Pre-flight fine alignment"). The reference starts its
+// filters at t0 from a "fine-alignment-like" state: the true values plus small random errors, once per run. We
+// model that alignment as a product of the sensor suite, so the navigation filters start from what the sensors
+// publish and never read the truth: sensors_inertial publishes the attitude and the gyro/accelerometer full errors
+// at t0, sensors_magnetic the magnetometer full error and the magnetic model deviation, each with its 1-sigma
+// (ImuSample / MagSample `align_*`). A hardware-in-the-loop user replaces them with the outputs of a real alignment.
 //
 // Error model (baseline values of the reference; suite file `alignment:` section):
 //   attitude  q = dq (x) q_true (error on the NED side), dq a rotation by gamma ~ N(0, 0.1 deg) about the axis
 //             a = (cos p1 cos p2, sin p2, sin p1), p1 integer degrees U[-179, 180], p2 = (integer U[-179, 180]) / 2
-//             degrees. The reference does not normalise `a` (|a| in [1, sqrt 2], inflating the angle, models-nav.md
-//             §10.10); we normalise it (`normalise_error_axis: false` restores the reference).
+//             degrees. The reference does not normalise `a` (|a| in [1, sqrt 2], inflating the angle); we
+//             normalise it (`normalise_error_axis: false` restores the reference).
 //   E_gyr, E_acc, E_mag = truth (x) (1 + 0.01 nu);  B_dev = truth (x) (1 + 0.1 nu);  nu ~ N(0, I3) per quantity.
 //   1-sigma given with them: 0.01 |truth| (0.1 |truth| for B_dev) per axis; attitude: gamma's sigma.
 // Draw order (one Stream per component, child "alignment"): IMU: attitude (gamma, p1, p2), E_gyr, E_acc;

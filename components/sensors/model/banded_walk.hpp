@@ -1,6 +1,6 @@
 #pragma once
-// Band-limited random walk, in units of its own step sigma (reference models-nav.md section 1.2,
-// "grow_random_walk"). Per step, with nu ~ N(0, 1), limit L and pull zone S = kBandMargin:
+// Band-limited random walk, in units of its own step sigma (docs/sensors.md, "Band-limited random walk"; the
+// reference's "grow_random_walk"). Per step, with nu ~ N(0, 1), limit L and pull zone S = kBandMargin:
 //     L - y < S:   y <- y + nu - 0.1 |L - S - y| / S      (pulled down, from 0 at L - S growing linearly)
 //     y + L < S:   y <- y + nu + 0.1 |-L + S - y| / S     (pulled up)
 //     otherwise:   y <- y + nu

@@ -1,5 +1,5 @@
 #pragma once
-// GNSS receiver (reference models-nav.md sections 1.6 and 8). Called every sensor step k (t = t0 + k dt); a fix
+// GNSS receiver (docs/sensors.md, "GNSS"). Called every sensor step k (t = t0 + k dt); a fix
 // is produced only on fix epochs, decided on the integer step index alone (no floating time comparison):
 //
 //   fix epoch:  k mod n_fix == 0  and  k <= k_loss,     n_fix = round(fix_period / dt)

@@ -55,7 +55,7 @@ struct AtmGrade {
     bool operator==(const AtmGrade&) const = default;
 };
 
-// GNSS receiver (reference models-nav.md section 1.6; the paper has no GNSS grade table).
+// GNSS receiver (docs/sensors.md, "GNSS": the reference's only grade; the paper has no GNSS grade table).
 struct GnssGrade {
     double horizontal_m{0.0};         // white position error sigma, North and East, per fix [m]
     double vertical_m{0.0};           // white position error sigma, Down, per fix [m]

@@ -1,6 +1,6 @@
 #pragma once
-// Inertial measurement unit: gyroscope and accelerometer triads on a strapdown platform (reference
-// models-nav.md sections 1.2-1.3; paper, "Sensors"). Called once per sensor step (dt = params.dt_s).
+// Inertial measurement unit: gyroscope and accelerometer triads on a strapdown platform (docs/sensors.md,
+// "Inertial triads" and "IMU mounting"; paper, "Sensors"). Called once per sensor step (dt = params.dt_s).
 //
 //   gyroscopes:     w~ = R^_BP (I + M_g) R_PB w_ib_b + b_g(k) + (sigma_v,g / sqrt(dt)) nu_k
 //   accelerometers: f~ = R^_BP (I + M_a) R_PB (f_ib_b + l_true) - l_est + b_a(k) + (sigma_v,a / sqrt(dt)) nu_k
@@ -11,8 +11,8 @@
 //   The output is the specific force at the CG and the inertial rate, in body axes as the platform estimates them.
 //
 // Deviation from the reference: its gyroscope model leaves the main term w unrotated (only the scale/cross term
-// goes through R^_BP M_g R_PB), i.e. it ignores the residual mounting misalignment for the gyroscopes (models-nav.md
-// 1.2 and 10.6). Both triads sit on the same platform, so here both see R^_BP (I + M) R_PB (residual ~0.03 deg).
+// goes through R^_BP M_g R_PB), i.e. it ignores the residual mounting misalignment for the gyroscopes. Both triads
+// sit on the same platform, so here both see R^_BP (I + M) R_PB (residual ~0.03 deg).
 //
 // Inputs:  InertialTruth (f_ib_b at the CG, w_ib_b, dw_ib_b, mass for the CG position).
 // Outputs: ImuMeasurement (f_b, w_b, and the full errors E_acc, E_gyr without white noise).

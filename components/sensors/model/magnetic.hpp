@@ -1,5 +1,5 @@
 #pragma once
-// Magnetometer triad (reference models-nav.md section 1.4; paper, "Sensors"): no bias drift, not on the IMU
+// Magnetometer triad (docs/sensors.md, "Magnetometers"; paper, "Sensors"): no bias drift, not on the IMU
 // platform (no mounting rotation).
 //
 //   b~_b = (I + M_m) b_b + B_hi + B_off + (sigma_v / sqrt(dt)) nu_k,    b_b = R(q_nb)^T b_n (true field)

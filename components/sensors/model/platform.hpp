@@ -1,5 +1,5 @@
 #pragma once
-// IMU platform (mounting) model, drawn once per run (reference models-nav.md section 1.3).
+// IMU platform (mounting) model, drawn once per run (docs/sensors.md, "IMU mounting").
 //   T_RP,true = configured IMU position;  T_RP,est = T_RP,true + sigma_pos N(0, I3)
 //   (yaw, pitch, bank)_BP,true ~ N(0, diag(sigma_mount)^2);  (.)_BP,est = (.)_BP,true + sigma_est N(0, I3)
 //   R_BP = dcm_from_euler(euler_BP): platform -> body coordinates; R_PB = R_BP^T.

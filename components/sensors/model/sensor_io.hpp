@@ -2,8 +2,8 @@
 // Plain input (truth) and output (measurement) structs of the sensor models. Every truth field maps one-to-one to
 // a field of the IDL topic gdnav::msg::Truth (idl/gdnav.idl); every measurement struct carries the fields of the
 // matching IDL sample topic (ImuSample, MagSample, AirSample, AtmSample, GnssSample) plus, where useful, the
-// sensor's "full error" without white noise (truth for the filters' initialisation, section 6 of
-// models-nav.md, and for the recorder's metrics). Frames: N = local NED, B = body; SI units.
+// sensor's "full error" without white noise (truth for the filters' initialisation, docs/sensors.md, "Pre-flight
+// fine alignment", and for the recorder's metrics). Frames: N = local NED, B = body; SI units.
 #include <cstdint>
 
 #include "math/rotation.hpp"

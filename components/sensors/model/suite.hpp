@@ -29,7 +29,7 @@
 
 namespace gdnav::sensors {
 
-// IMU mounting (reference models-nav.md section 1.3). Positions relative to the reference point R (wing trailing
+// IMU mounting (docs/sensors.md, "IMU mounting"). Positions relative to the reference point R (wing trailing
 // edge) in body axes; Euler angles 3-2-1 of the body -> platform rotation (R_BP maps platform to body axes).
 struct PlatformParams {
     math::Vec3 imu_position_m{0.30, 0.0, 0.10};          // true T_RP

@@ -1,5 +1,5 @@
 #pragma once
-// Error state of one inertial triad (three gyroscopes or three accelerometers), reference models-nav.md 1.2:
+// Error state of one inertial triad (three gyroscopes or three accelerometers), docs/sensors.md "Inertial triads":
 //   per run:    bias offset  B_off = B0 N(0, I3)
 //               scale/cross-coupling matrix M: diagonal s N(0,1); off-diagonal m N(0,1) (full, gyroscopes) or
 //               only below the diagonal (lower-triangular, accelerometers: that triad defines the platform axes)

@@ -1,4 +1,5 @@
-// The paper scenario generators (models-physics.md §6, §8): streams, explicit values, overrides, mission format.
+// The paper scenario generators (docs/montecarlo.md, "Scenarios #1 and #2"): streams, explicit values, overrides,
+// mission format.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -100,7 +101,7 @@ TEST(PaperScenario, EachPartFromItsOwnStream) {
 }
 
 TEST(PaperScenario, BothScenariosShareTheCommonDraws) {
-    // As the reference (§0.1): for one seed both scenarios fly the same chi_0, chi_1, V_ini, Hp_ini, t_turn, initial
+    // As the reference: for one seed both scenarios fly the same chi_0, chi_1, V_ini, Hp_ini, t_turn, initial
     // wind, dT_ini, dp_ini and Earth deviations.
     for (std::uint64_t run = 0; run < 20; ++run) {
         const auto s1 = scenario::draw_paper_scenario(1, 11, run, nullptr);
@@ -192,7 +193,8 @@ TEST(PaperScenario, BadGeneratorOptionsNameTheKey) {
 }
 
 TEST(PaperScenario, DrawsStayInsideTheComponentRanges) {
-    // 200 runs of each scenario: the explicit values respect the definitions of §8 (and so the physics ranges).
+    // 200 runs of each scenario: the explicit values respect the scenario definitions
+    // (docs/montecarlo.md, "Scenarios #1 and #2"), and so the physics ranges.
     for (int sc : {1, 2})
         for (std::uint64_t run = 0; run < 200; ++run) {
             const auto d = scenario::draw_paper_scenario(sc, 1, run, nullptr);

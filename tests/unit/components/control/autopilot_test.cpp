@@ -1,4 +1,5 @@
-// Autopilot: configuration file = §7 table, loop measurements, rate, first actions computed by hand, mode resets.
+// Autopilot: configuration file = the gain tables of docs/guidance-control.md ("Control"), loop measurements, rate,
+// first actions computed by hand, mode resets.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Discrete PID and set-point ramp against hand-computed sequences (models-physics.md §7).
+// Discrete PID and set-point ramp against hand-computed sequences (docs/guidance-control.md, "Control").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -62,7 +62,8 @@ TEST(RampFilter, FirstStepsAndPassThrough) {
 }
 
 // A unit step reaches 1 - 1/e after k steps with (N/(N+1))^k <= 1/e, i.e. k = ceil(1 / ln(1 + 1/N)):
-// N = 8 -> 9 steps (0.18 s at 50 Hz), N = 32 -> 33 (0.66 s), N = 64 -> 65 (1.3 s): about N dt, as §7 says.
+// N = 8 -> 9 steps (0.18 s at 50 Hz), N = 32 -> 33 (0.66 s), N = 64 -> 65 (1.3 s): about N dt, as
+// docs/guidance-control.md ("Control") says.
 TEST(RampFilter, TimeConstantIsAboutNSteps) {
     for (const auto& [n, k63] : {std::pair{8.0, 9}, std::pair{16.0, 17}, std::pair{32.0, 33}, std::pair{64.0, 65}}) {
         RampFilter r;

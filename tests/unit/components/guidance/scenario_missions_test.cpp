@@ -1,4 +1,4 @@
-// Scenario mission builders and draws (models-physics.md §6 tables and draw rules).
+// Scenario mission builders and draws (docs/guidance-control.md, "Scenario missions": tables and draw rules).
 #include <gtest/gtest.h>
 
 #include <cmath>

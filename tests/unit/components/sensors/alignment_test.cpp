@@ -1,6 +1,6 @@
-// Pre-flight fine alignment emulation (components/sensors/model/alignment.hpp; models-nav.md §6): the attitude
-// error spread with and without the reference's non-unit axis, the relative errors of the calibrated sensor errors
-// and their published sigmas, determinism and the suite-file section.
+// Pre-flight fine alignment emulation (components/sensors/model/alignment.hpp; docs/sensors.md, "Pre-flight fine
+// alignment"): the attitude error spread with and without the reference's non-unit axis, the relative errors of
+// the calibrated sensor errors and their published sigmas, determinism and the suite-file section.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -128,7 +128,7 @@ TEST(SensorConfig, SwitchingAGradeChangesExactlyThatTable) {
     EXPECT_EQ(mb.at("mag.cross_coupling"), 7.00e-4);
     EXPECT_EQ(mw.at("mag.hard_iron_nT"), 350.0);
     EXPECT_EQ(mw.at("mag.bias_offset_nT"), 750.0);
-    // Air data: paper values where the reference code disagrees (models-nav.md 10.8).
+    // Air data: paper values where the reference code disagrees (docs/sensors.md, "Grades").
     const Params ab = as_map(suite_with("air_data", "better"));
     const Params aw = as_map(suite_with("air_data", "worse"));
     EXPECT_EQ(ab.at("air.tas_mps.noise"), 0.15);

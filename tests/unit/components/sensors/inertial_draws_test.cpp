@@ -136,7 +136,7 @@ TEST(InertialEquations, AngularAccelerationLeverArmAndItsCompensation) {
 }
 
 TEST(InertialEquations, LeverArmCompensationInjectsDifferentiatedGyroNoise) {
-    // Reference behaviour (models-nav.md 1.2 and 10.7): the IMU compensates dw~ x T_BP with dw~ the backward
+    // Reference behaviour (docs/sensors.md, "Inertial triads"): the IMU compensates dw~ x T_BP with dw~ the backward
     // difference of its own noisy gyro output, so a static IMU off the CG shows differentiated gyro noise:
     //   dw~ per axis: sqrt(2) sigma_g / dt = sqrt(2) 7.505e-4 / 0.01 = 0.10614 rad/s^2 (iid between axes)
     //   T_BP = (0.093, 0, 0.105) m (full tank, no position error) -> f~ = -dw~ x T_BP:

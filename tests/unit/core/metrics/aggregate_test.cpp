@@ -1,4 +1,4 @@
-// Aggregation across runs (reference §9.3) and the paper-layout tables.
+// Aggregation across runs (docs/montecarlo.md, "Aggregation and report") and the paper-layout tables.
 #include <gtest/gtest.h>
 
 #include <cmath>

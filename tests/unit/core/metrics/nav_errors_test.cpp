@@ -1,4 +1,5 @@
-// Navigation errors against hand computations (models-physics.md §9.1 conventions).
+// Navigation errors against hand computations (conventions of docs/montecarlo.md, "nav_recorder: errors, online
+// metrics and files").
 #include <gtest/gtest.h>
 
 #include <cmath>
