@@ -4,6 +4,8 @@
 #include <spdlog/spdlog.h>
 
 #include "commands.hpp"
+#include "dds/process/run_cause.hpp"
+#include "files/write_error.hpp"
 #include "framework/lockstep.hpp"
 #include "framework/topic_types.hpp"
 
@@ -57,6 +59,11 @@ int cli_main(int argc, char** argv, const runtime::ComponentRegistry& reg, const
         if (!spdlog::get("gdnav")) setup_logging("gdnav", ctx.log_level);
         spdlog::error("{}", e.what());
         return runtime::kExitConfig;
+    } catch (const files::WriteError& e) {
+        if (!spdlog::get("gdnav")) setup_logging("gdnav", ctx.log_level);
+        spdlog::error("{}", e.what());
+        runtime::tell_launcher(e.what());  // a member process: its log may be on the same full disk
+        return runtime::kExitWriteFailed;
     } catch (const std::exception& e) {
         if (!spdlog::get("gdnav")) setup_logging("gdnav", ctx.log_level);
         spdlog::error("{}", e.what());

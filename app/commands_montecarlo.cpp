@@ -53,7 +53,8 @@ int run_montecarlo(const McArgs& a, const CliContext& ctx) {
     }
     const Shard shard = a.shard.empty() ? Shard{} : parse_shard(a.shard);
     int code = run_batch_shard(a, ctx, shard);
-    if (code == kExitInterrupted) return code;
+    // Interrupted, or stopped on a full disk (a report could not be written either): the batch's last line stands.
+    if (code == kExitInterrupted || code == kExitWriteFailed) return code;
     if (!shard.whole()) {
         spdlog::info("montecarlo: shard {}/{} done; aggregate the shards with: gdnav report DIR [DIR ...]", shard.index,
                      shard.count);

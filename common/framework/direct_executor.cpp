@@ -1,10 +1,12 @@
 #include "framework/direct_executor.hpp"
 
 #include <chrono>
+#include <exception>
 #include <stdexcept>
 
 #include <spdlog/spdlog.h>
 
+#include "files/write_error.hpp"
 #include "framework/graph.hpp"
 
 namespace gdnav::runtime {
@@ -112,6 +114,10 @@ void DirectExecutor::step(std::uint64_t k) {
                 c->step(ctx);
                 profile_ns_[i] += std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
             }
+        } catch (const files::WriteError& e) {
+            // The same error, with the member and the step (exit code 6: docs/runtime.md "Exit codes").
+            throw files::WriteError(
+                e.file(), e.os_error(), fmt::format("member '{}' failed at step {} (t = {:.2f} s): ", c->name(), k, ctx.t_s));
         } catch (const std::exception& e) {
             // Named as a DDS host names it (dds/host/host_step.cpp): the member, the step, the first line.
             std::string what = e.what();
@@ -150,8 +156,19 @@ std::vector<double> DirectExecutor::mean_step_us(std::uint64_t steps) const {
 void DirectExecutor::finish(bool completed) {
     if (finished_) return;
     finished_ = true;
-    for (std::size_t i = 0; i < order_.size(); ++i)
-        if (!killed_[i]) order_[i]->finish(completed);
+    // Every member finishes (closes its files) even when another one's finish throws; the first exception is
+    // rethrown afterwards, its type kept (a files::WriteError gives exit code 6).
+    std::exception_ptr first;
+    for (std::size_t i = 0; i < order_.size(); ++i) {
+        if (killed_[i]) continue;
+        try {
+            order_[i]->finish(completed);
+        } catch (const std::exception& e) {
+            spdlog::error("member '{}' failed at the end of the run: {}", order_[i]->name(), e.what());
+            if (!first) first = std::current_exception();
+        }
+    }
+    if (first) std::rethrow_exception(first);
 }
 
 }  // namespace gdnav::runtime

@@ -38,6 +38,8 @@ inline constexpr int kExitConfig = 2;
 inline constexpr int kExitAborted = 3;
 inline constexpr int kExitLostClock = 4;
 inline constexpr int kExitStartup = 5;
+// An output file could not be written (a full disk, a file size limit, an I/O error): docs/runtime.md "Exit codes".
+inline constexpr int kExitWriteFailed = 6;
 inline constexpr int kExitInterrupted = 130;
 
 // A loop that did not come round for longer than a wait slice plus this margin was not scheduled (a loaded machine,

@@ -1,13 +1,13 @@
 // The direct layout (launch/launcher.hpp, run_direct): every component in this process, one thread, no transport.
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string>
 
 #include <spdlog/spdlog.h>
 
 #include "dds/process/process_signals.hpp"
+#include "files/write_error.hpp"
 #include "framework/direct_executor.hpp"
 #include "framework/lockstep.hpp"
 #include "launch/launcher.hpp"
@@ -20,14 +20,27 @@ namespace {
 // <out>/clock_summary.yaml of a direct run, in the clock's layout (docs/protocol.md §5): `head` (completed,
 // steps_done and what goes with them), then the lines every direct run has in common: no member can die or rejoin
 // and nothing runs free, so the run is reproducible.
+// Written whole or not at all (files::write_whole); a WriteError ends the run like a member's.
 void write_direct_summary(const RunConfig& rc, const std::string& head) {
     if (rc.out_dir.empty()) return;
-    std::ofstream f(fs::path(rc.out_dir) / "clock_summary.yaml");
-    f << head << "dead_members: []\nreproducible: true\n";
+    files::write_whole(fs::path(rc.out_dir) / "clock_summary.yaml", head + "dead_members: []\nreproducible: true\n");
 }
+
+int run_direct_steps(const RunConfig& rc, const ComponentRegistry& reg, bool progress, double* steps_per_s);
 }  // namespace
 
 int run_direct(const RunConfig& rc, const ComponentRegistry& reg, bool progress, double* steps_per_s) {
+    try {
+        return run_direct_steps(rc, reg, progress, steps_per_s);
+    } catch (const files::WriteError& e) {
+        // The run's last line names the file and the OS error, as the launcher's does in the other layouts.
+        spdlog::error("run failed (exit code {}): {}", kExitWriteFailed, e.what());
+        return kExitWriteFailed;
+    }
+}
+
+namespace {
+int run_direct_steps(const RunConfig& rc, const ComponentRegistry& reg, bool progress, double* steps_per_s) {
     auto comps = rc.build(reg);
     DirectExecutor ex(std::move(comps), rc.info);
     ex.set_faults(rc.faults, [&rc, &reg](const std::string& name) { return rc.build_one(reg, name); });
@@ -80,5 +93,6 @@ int run_direct(const RunConfig& rc, const ComponentRegistry& reg, bool progress,
     write_direct_summary(rc, head.str());
     return kExitOk;
 }
+}  // namespace
 
 }  // namespace gdnav::runtime

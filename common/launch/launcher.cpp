@@ -16,9 +16,11 @@
 #include <spdlog/spdlog.h>
 #include <yaml-cpp/yaml.h>
 
+#include "files/write_error.hpp"
 #include "framework/lockstep.hpp"
 #include "framework/run_members.hpp"
 #include "dds/process/process_signals.hpp"
+#include "dds/process/run_cause.hpp"
 #include "dds/security/security.hpp"
 #include "launch/children.hpp"
 #include "launch/domain_lock.hpp"
@@ -73,8 +75,8 @@ fs::path write_run_yaml(const RunConfig& rc, const LaunchOptions& opt) {
     if (opt.start_clock) fs::remove(fs::path(rc.out_dir) / "clock_summary.yaml");
     const fs::path run_yaml = fs::path(rc.out_dir) / "run.yaml";
     const std::string text = run_yaml_text(rc);
-    std::ofstream f(run_yaml);
-    f << "# Resolved run configuration written by gdnav run (layout " << opt.layout << ")\n" << text;
+    files::write_whole(run_yaml,
+                       "# Resolved run configuration written by gdnav run (layout " + opt.layout + ")\n" + text);
     return run_yaml;
 }
 
@@ -213,6 +215,8 @@ struct Outcome {
     std::vector<std::string> member_failures;  // of them, the process members gdnav started
     bool interrupted{false};
     bool stopped{false};  // the launcher stopped the run after a member_failure
+    bool write_failed{false};         // a process ended with kExitWriteFailed (an output file it could not write)
+    std::vector<std::string> causes;  // the lines the processes told the launcher (dds/process/run_cause.hpp)
 };
 
 bool is_process_member(const std::vector<MemberProcess>& procs, const std::string& name) {
@@ -228,6 +232,7 @@ Outcome supervise(std::vector<Child>& children, const RunConfig& rc, const std::
         const bool clock = c.name == kClockName;
         if (clock) out.clock_code = WIFEXITED(c.status) ? WEXITSTATUS(c.status) : 128 + WTERMSIG(c.status);
         if (ok) return;
+        out.write_failed = out.write_failed || (WIFEXITED(c.status) && WEXITSTATUS(c.status) == kExitWriteFailed);
         // A member that ended with 3 only followed the clock's ABORT, and the clock's own exit code is on the
         // closing line: neither is a cause of its own (logged at debug level).
         const bool follows_clock = WIFEXITED(c.status) && (clock || WEXITSTATUS(c.status) == kExitAborted);
@@ -291,7 +296,10 @@ int exit_code(const Outcome& out, const RunConfig& rc, const LaunchOptions& opt,
         spdlog::info("host slice completed; results in {}", rc.out_dir);
         return kExitOk;
     }
-    const ClockSummary summary = read_clock_summary(fs::path(rc.out_dir) / "clock_summary.yaml");
+    ClockSummary summary = read_clock_summary(fs::path(rc.out_dir) / "clock_summary.yaml");
+    // No reason in the summary (the clock could not write it, or a member failed after a completed run): the first
+    // cause a process told the launcher.
+    if (summary.abort_reason.empty() && !out.causes.empty()) summary.abort_reason = out.causes.front();
     std::vector<std::string> members = out.member_failures;  // members gdnav started that failed or were lost
     for (const auto& d : summary.dead)
         if (is_process_member(procs, d.name))
@@ -301,8 +309,9 @@ int exit_code(const Outcome& out, const RunConfig& rc, const LaunchOptions& opt,
                       rc.out_dir);
         return 1;
     }
-    if (out.clock_code != kExitOk) {
-        const int code = out.clock_code > 0 ? out.clock_code : 1;
+    if (out.clock_code != kExitOk || out.write_failed) {
+        // A file that could not be written is the run's cause whatever the clock made of it (docs/runtime.md).
+        const int code = out.write_failed ? kExitWriteFailed : out.clock_code > 0 ? out.clock_code : 1;
         spdlog::error("{}", failed_run_line(code, summary, out.failures));
         return code;
     }
@@ -338,6 +347,7 @@ int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& 
     const std::time_t started = std::time(nullptr) - 1;
     install_stop_signal_handlers();
     std::vector<Child> services = start_services(opt);
+    CausePipe causes;  // before the clock and the members start: they inherit its write end
     std::vector<Child> children;
     if (opt.start_clock && !start_clock(children, rc, opt, run_yaml)) {
         const int code = clock_refused(children);
@@ -346,7 +356,8 @@ int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& 
     }
     for (Child& c : start_members(rc, opt, run_yaml)) children.push_back(c);
     start_process_members(children, procs, rc);
-    const Outcome out = supervise(children, rc, procs);
+    Outcome out = supervise(children, rc, procs);
+    out.causes = causes.read_lines();
     stop_services(services);
     const auto removed = clean_fastdds_shm(started);
     if (!removed.empty()) spdlog::info("removed {} Fast DDS shared-memory files left by the run", removed.size());

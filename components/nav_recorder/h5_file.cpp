@@ -1,38 +1,81 @@
 #include "h5_file.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
+
+#include "files/write_error.hpp"
 
 namespace gdnav::nav_recorder {
 
 namespace {
 
-// The innermost message of the HDF5 error stack (for exceptions); also silences HDF5's own printing.
-std::string h5_error() {
-    std::string msg;
+// The file the current entry point works on, for the errors of check().
+thread_local const std::string* g_file = nullptr;
+
+// Every public entry point starts with an Entry. HDF5 keeps its error stack and its automatic printing per thread,
+// and a component's calls may come from any thread of the host: each entry silences the printing on its own thread
+// (the errors become one exception each, never HDF5's diagnostic stack on stderr).
+class Entry {
+public:
+    explicit Entry(const std::string& file) : previous_(g_file) {
+        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+        g_file = &file;
+    }
+    ~Entry() { g_file = previous_; }
+    Entry(const Entry&) = delete;
+    Entry& operator=(const Entry&) = delete;
+
+private:
+    const std::string* previous_;
+};
+
+struct H5Failure {
+    std::string message;  // the innermost message of the error stack
+    int errnum{0};        // the operating system's errno when the failure was a refused read or write (else 0)
+};
+
+// Reads and clears the error stack. HDF5's POSIX driver puts the OS error into its message ("..., errno = 28, error
+// message = 'No space left on device', ...").
+H5Failure h5_error() {
+    H5Failure f;
     H5Ewalk2(
         H5E_DEFAULT, H5E_WALK_UPWARD,
         [](unsigned, const H5E_error2_t* e, void* data) -> herr_t {
-            auto* m = static_cast<std::string*>(data);
-            if (m->empty() && e->desc) *m = e->desc;
+            auto* out = static_cast<H5Failure*>(data);
+            if (!e->desc) return 0;
+            if (out->message.empty()) out->message = e->desc;
+            const char* at = std::strstr(e->desc, "errno = ");
+            if (out->errnum == 0 && at) out->errnum = std::atoi(at + 8);
             return 0;
         },
-        &msg);
+        &f);
     H5Eclear2(H5E_DEFAULT);
-    return msg.empty() ? "unknown HDF5 error" : msg;
+    if (f.message.empty()) f.message = "unknown HDF5 error";
+    return f;
 }
 
 template <class T>
 T check(T r, const std::string& what) {
-    if (r < 0) throw std::runtime_error("HDF5: " + what + ": " + h5_error());
-    return r;
+    if (r >= 0) return r;
+    const H5Failure f = h5_error();
+    if (f.errnum > 0 && g_file) files::throw_write_error(*g_file, f.errnum);
+    throw std::runtime_error("HDF5: " + what + ": " + f.message);
 }
 
 }  // namespace
 
 H5File::H5File(const std::filesystem::path& path) : path_(path.string()) {
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    // HDF5 closes the files still open at the process's exit; one whose last write was refused (a full disk) cannot
+    // be closed and that close crashes the library (HDF5 1.10.8: H5F__close_cb). Every file is closed here
+    // explicitly, so the library's exit handler is not wanted; it must be declined before the library starts.
+    static const bool no_exit_handler = [] {
+        H5dont_atexit();
+        return true;
+    }();
+    (void)no_exit_handler;
+    const Entry entry(path_);
     file_ = check(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "cannot create " + path_);
 }
 
@@ -45,6 +88,7 @@ H5File::~H5File() {
 
 int H5File::add_table(const std::string& name, const std::vector<std::string>& columns, std::size_t chunk_rows,
                       int deflate_level) {
+    const Entry entry(path_);
     Table t;
     t.columns = columns.size();
     const std::size_t row_bytes = columns.size() * sizeof(double);
@@ -60,6 +104,9 @@ int H5File::add_table(const std::string& name, const std::vector<std::string>& c
     const hid_t dcpl = check(H5Pcreate(H5P_DATASET_CREATE), "dataset properties");
     const hsize_t chunk[1] = {static_cast<hsize_t>(chunk_rows)};
     check(H5Pset_chunk(dcpl, 1, chunk), "chunk");
+    // No creation/modification times in the object headers: a run's file is the same bytes whenever it is written
+    // (a rerun of a batch run is compared byte for byte: docs/montecarlo.md, "Damaged runs and a full disk").
+    check(H5Pset_obj_track_times(dcpl, false), "track times");
     if (deflate_level > 0 && H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0) {
         check(H5Pset_shuffle(dcpl), "shuffle");
         check(H5Pset_deflate(dcpl, static_cast<unsigned>(deflate_level)), "deflate");
@@ -74,6 +121,7 @@ int H5File::add_table(const std::string& name, const std::vector<std::string>& c
 }
 
 void H5File::append(int table, const double* data, std::size_t rows) {
+    const Entry entry(path_);
     if (rows == 0) return;
     Table& t = tables_.at(static_cast<std::size_t>(table));
     const hsize_t start[1] = {t.rows};
@@ -91,6 +139,7 @@ void H5File::append(int table, const double* data, std::size_t rows) {
 }
 
 void H5File::attribute(hid_t loc, const std::string& name, hid_t type, const void* value) {
+    const Entry entry(path_);
     if (check(H5Aexists(loc, name.c_str()), "attribute " + name) > 0) check(H5Adelete(loc, name.c_str()), "attribute " + name);
     const hid_t space = check(H5Screate(H5S_SCALAR), "scalar space");
     const hid_t a = check(H5Acreate2(loc, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), "attribute " + name);
@@ -107,6 +156,7 @@ void H5File::set_attribute(const std::string& name, std::int64_t value) {
 }
 
 void H5File::set_attribute(const std::string& name, const std::string& value) {
+    const Entry entry(path_);
     const hid_t type = check(H5Tcopy(H5T_C_S1), "string type");
     H5Tset_size(type, std::max<std::size_t>(value.size(), 1));
     H5Tset_strpad(type, H5T_STR_NULLPAD);
@@ -115,6 +165,7 @@ void H5File::set_attribute(const std::string& name, const std::string& value) {
 }
 
 void H5File::set_table_attribute(int table, const std::string& name, const std::string& value) {
+    const Entry entry(path_);
     const hid_t type = check(H5Tcopy(H5T_C_S1), "string type");
     H5Tset_size(type, std::max<std::size_t>(value.size(), 1));
     H5Tset_strpad(type, H5T_STR_NULLPAD);
@@ -123,6 +174,7 @@ void H5File::set_table_attribute(int table, const std::string& name, const std::
 }
 
 void H5File::write_metrics(const std::string& name, const std::vector<MetricsRow>& rows) {
+    const Entry entry(path_);
     constexpr std::size_t kName = 16;
     struct Row {
         char name[kName];
@@ -151,8 +203,11 @@ void H5File::write_metrics(const std::string& name, const std::vector<MetricsRow
     H5Tinsert(type, "final", HOFFSET(Row, final), H5T_NATIVE_DOUBLE);
     const hsize_t dims[1] = {rows.size()};
     const hid_t space = check(H5Screate_simple(1, dims, nullptr), "metrics space");
-    const hid_t ds = check(H5Dcreate2(file_, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+    const hid_t dcpl = check(H5Pcreate(H5P_DATASET_CREATE), "dataset properties");
+    check(H5Pset_obj_track_times(dcpl, false), "track times");  // as add_table
+    const hid_t ds = check(H5Dcreate2(file_, name.c_str(), type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT),
                            "create dataset " + name);
+    H5Pclose(dcpl);
     const herr_t w = H5Dwrite(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
     H5Dclose(ds);
     H5Sclose(space);
@@ -161,10 +216,14 @@ void H5File::write_metrics(const std::string& name, const std::vector<MetricsRow
     check(w, "write " + name);
 }
 
-void H5File::flush() { check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flush " + path_); }
+void H5File::flush() {
+    const Entry entry(path_);
+    check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flush " + path_);
+}
 
 void H5File::close() {
     if (file_ < 0) return;
+    const Entry entry(path_);
     for (auto& t : tables_) {
         H5Tclose(t.mem_type);
         H5Dclose(t.dataset);

@@ -18,7 +18,8 @@ namespace gdnav::nav_recorder {
 
 class H5File {
 public:
-    // Creates (truncates) `path`. Throws std::runtime_error with the HDF5 message on failure.
+    // Creates (truncates) `path`. Every call throws files::WriteError (the file and the OS error) when the operating
+    // system refused a write, std::runtime_error with the HDF5 message on any other failure.
     explicit H5File(const std::filesystem::path& path);
     ~H5File();
     H5File(const H5File&) = delete;

@@ -4,13 +4,14 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <limits>
 #include <memory>
 #include <optional>
 
 #include <spdlog/spdlog.h>
 
+#include "files/write_error.hpp"
 #include "h5_file.hpp"
 #include "metrics/run_metrics.hpp"
 #include "metrics/run_record.hpp"
@@ -110,14 +111,14 @@ public:
             fill_error_row(&err_rows_[kErrorColumns * rows_], ctx.t_s, err ? &*err : nullptr);
             ++rows_;
         }
-        if (rows_ == flush_rows_ || gnss_count_ == flush_rows_) flush(false);
+        if (rows_ == flush_rows_ || gnss_count_ == flush_rows_) flush(false);  // a WriteError ends the run
     }
 
     void finish(bool completed) override {
         if (finished_) return;
         finished_ = true;
         const bool complete = completed && started_ && last_k_ + 1 == run_.steps;
-        if (dir_.empty() || !started_) return;
+        if (dir_.empty() || !started_ || failed_) return;  // failed_: said once, when the write failed
         try {
             const SignalHold hold;
             flush(complete);
@@ -131,6 +132,8 @@ public:
             }
             file_->set_attribute("complete", static_cast<std::int64_t>(complete ? 1 : 0));
             file_->close();
+        } catch (const files::WriteError&) {
+            throw;  // the run's cause (flush has left no file claiming a complete run)
         } catch (const std::exception& e) {
             spdlog::error("nav_recorder: {}", e.what());
         }
@@ -208,8 +211,26 @@ private:
         file_->flush();
     }
 
+    // Appends the buffered rows and rewrites metrics.yaml. A write the operating system refuses (files::WriteError)
+    // leaves no file claiming a complete run: metrics.yaml is rewritten as incomplete, or removed when even that
+    // fails, and run.h5 keeps complete = 0; the error goes on to the host, which ends the run with it.
     void flush(bool complete) {
         if (!file_) return;
+        try {
+            write_files(complete);
+        } catch (const files::WriteError&) {
+            failed_ = true;
+            std::error_code ec;
+            try {
+                write_record(false);
+            } catch (const files::WriteError&) {
+                fs::remove(fs::path(dir_) / "metrics.yaml", ec);
+            }
+            throw;
+        }
+    }
+
+    void write_files(bool complete) {
         const SignalHold hold;
         file_->append(tables_[0], truth_rows_.data(), rows_);
         file_->append(tables_[1], est_rows_.data(), rows_);
@@ -220,21 +241,27 @@ private:
         file_->set_attribute("steps_recorded", static_cast<std::int64_t>(steps_));
         file_->set_attribute("distance_since_gnss_m", reference_ ? metrics_.distance_since_gnss_m() : kNoValue);
         file_->flush();
-        metrics::write_run_record(
-            fs::path(dir_) / "metrics.yaml",
+        write_record(complete);
+    }
+
+    // metrics.yaml, whole or not at all (files::write_whole).
+    void write_record(bool complete) const {
+        const metrics::RunRecord r =
             reference_ ? metrics::make_run_record(metrics_, complete, run_.seed, run_.run_index, steps_)
-                       : metrics::make_unreferenced_record(complete, run_.seed, run_.run_index, steps_, metrics_.t_gnss_s()));
-        if (align_) append_alignment(fs::path(dir_) / "metrics.yaml");
+                       : metrics::make_unreferenced_record(complete, run_.seed, run_.run_index, steps_, metrics_.t_gnss_s());
+        files::write_whole(fs::path(dir_) / "metrics.yaml", metrics::to_yaml(r) + alignment_text());
     }
 
     // `alignment:` of metrics.yaml: when the navigation declared itself aligned (never: aligned false, no times).
-    void append_alignment(const fs::path& file) const {
-        std::ofstream f(file, std::ios::app);
+    [[nodiscard]] std::string alignment_text() const {
+        if (!align_) return "";
+        std::ostringstream f;
         if (t_aligned_s_)
             f << "alignment: {aligned: true, t_aligned_s: " << *t_aligned_s_
               << ", time_to_align_s: " << *t_aligned_s_ - run_.t0_s << "}\n";
         else
             f << "alignment: {aligned: false}\n";
+        return f.str();
     }
 
     runtime::Input<msg::Truth> truth_{*this, topics::kTruth};
@@ -259,6 +286,7 @@ private:
     std::size_t gnss_count_{0};
     std::uint64_t steps_{0};
     std::uint64_t last_k_{0};
+    bool failed_{false};    // a write was refused (flush): nothing more is written
     bool reference_{true};  // Truth is the reference trajectory (false: `reference: none`, no errors)
     bool started_{false};
     bool finished_{false};

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -30,5 +31,11 @@ public:
 private:
     std::filesystem::path path_;
 };
+
+// Writes TEXT to P, creating its folders.
+inline void write_text(const std::filesystem::path& p, const std::string& text) {
+    std::filesystem::create_directories(p.parent_path());
+    std::ofstream(p) << text;
+}
 
 }  // namespace gdnav::test

@@ -10,11 +10,14 @@ import h5py
 import numpy as np
 import yaml
 
+from paper_stats import DamagedRun, damaged, run_damage  # noqa: F401 (DamagedRun: for the callers)
+
 DEG = 180.0 / math.pi
 
 
 def load_runs(batch):
-    """Complete runs of BATCH/runs/run_*: dicts {index, metrics (metrics.yaml), h5, dir}, sorted by run index."""
+    """Complete runs of BATCH/runs/run_*: dicts {index, metrics (metrics.yaml), h5, dir}, sorted by run index.
+    Raises DamagedRun for a run whose files differ from its files.yaml or whose run.h5 cannot be opened."""
     runs = []
     root = os.path.join(batch, "runs")
     for name in sorted(os.listdir(root)) if os.path.isdir(root) else []:
@@ -25,7 +28,16 @@ def load_runs(batch):
         with open(m) as f:
             rec = yaml.safe_load(f)
         if rec.get("complete") is True:
-            runs.append({"index": int(rec["run_index"]), "metrics": rec, "h5": h, "dir": d})
+            index = int(rec["run_index"])
+            why = run_damage(d)
+            if not why:
+                try:
+                    h5py.File(h, "r").close()
+                except OSError as e:
+                    why = f"run.h5 cannot be read ({str(e).splitlines()[0]})"
+            if why:
+                raise damaged(d, index, why)
+            runs.append({"index": index, "metrics": rec, "h5": h, "dir": d})
     runs.sort(key=lambda r: r["index"])
     return runs
 

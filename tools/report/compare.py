@@ -34,7 +34,7 @@ import warnings
 
 import yaml
 
-from paper_stats import DEG, f, group_table, pct, records, sig
+from paper_stats import DEG, damaged, f, group_table, pct, records, run_damage, sig
 
 # Paired metrics: key, label, unit, value of a run (smaller is better), decimals.
 PAIRED = [
@@ -69,6 +69,9 @@ class Batch:
             i = int(rec["run_index"])
             self.runs[i] = rec
             self.dirs[i] = os.path.join(path, "runs", f"run_{i:04d}")
+            why = run_damage(self.dirs[i])
+            if why:
+                raise InputError(str(damaged(self.dirs[i], i, why)))
             drawn = os.path.join(self.dirs[i], "drawn_scenario.yaml")
             if os.path.isfile(drawn):
                 with open(drawn, "rb") as fh:

@@ -40,8 +40,8 @@ def safe(label):
 
 def _run_page_job(job):
     import review  # plotly: only in the workers that write run pages
-    run_dir, path, title = job
-    review.run_page(run_dir, os.path.join(run_dir, "run.h5"), review_metrics(run_dir), path, title)
+    run_dir, path, title, lib_dir = job
+    review.run_page(run_dir, os.path.join(run_dir, "run.h5"), review_metrics(run_dir), path, title, lib_dir=lib_dir)
     return path
 
 
@@ -64,11 +64,13 @@ def run_pages(out, batches, runs, make_pages):
             elif make_pages:
                 rel = os.path.join("review", safe(b.label), os.path.basename(d) + ".html")
                 os.makedirs(os.path.dirname(os.path.join(out, rel)), exist_ok=True)
-                work.append((d, os.path.join(out, rel), f"Run {i} — {b.label}, seed {b.runs[i].get('seed')}"))
+                work.append((d, os.path.join(out, rel), f"Run {i} — {b.label}, seed {b.runs[i].get('seed')}", out))
                 links[(b.label, i)] = rel
             else:
                 links[(b.label, i)] = os.path.relpath(d, out)
     if work:
+        import review_page  # plotly.js written once, before the workers: every page here loads this copy
+        review_page.write_plotly_js(out)
         jobs = max(1, min(len(work), len(os.sched_getaffinity(0))))
         with multiprocessing.get_context("fork").Pool(jobs) as pool:
             list(pool.imap(_run_page_job, work))

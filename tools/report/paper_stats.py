@@ -14,6 +14,37 @@ import yaml
 DEG = 180.0 / math.pi
 
 
+class DamagedRun(Exception):
+    """A complete run whose files are not those it wrote: one line naming the run and what differs."""
+
+
+def run_damage(run_dir):
+    """What differs between RUN_DIR's files and the sizes its files.yaml recorded when the run ended (gdnav
+    montecarlo; docs/montecarlo.md, "Damaged runs and a full disk"), or "" (also for a run of a batch older than
+    files.yaml)."""
+    listed = os.path.join(run_dir, "files.yaml")
+    if not os.path.isfile(listed):
+        return ""
+    try:
+        with open(listed) as fh:
+            entries = (yaml.safe_load(fh) or {}).get("files") or {}
+    except (OSError, yaml.YAMLError) as e:
+        return f"files.yaml is unreadable ({e})"
+    for rel, entry in sorted(entries.items()):
+        path = os.path.join(run_dir, rel)
+        if not os.path.isfile(path):
+            return f"{rel} is missing"
+        size, want = os.path.getsize(path), int((entry or {}).get("size", -1))
+        if size != want:
+            return f"{rel} has {size} bytes, {want} when the run ended"
+    return ""
+
+
+def damaged(run_dir, index, why):
+    return DamagedRun(f"run {index} ({run_dir}) is damaged: {why}; run the batch's gdnav montecarlo command again "
+                      "to rerun it")
+
+
 def records(batch):
     """The metrics.yaml records of the complete runs of BATCH/runs/run_*, in folder order."""
     root = os.path.join(batch, "runs")

@@ -30,7 +30,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from batch_runs import (DEG, Streamed, batch_label, final_distance, load_failures, load_runs, read_table,  # noqa: E402
+from batch_runs import (DEG, DamagedRun, Streamed, batch_label, final_distance, load_failures, load_runs, read_table,  # noqa: E402
                         signal)
 
 # (column of /error, label, scale to plot units, unit)
@@ -153,7 +153,11 @@ def main():
     a = p.parse_args()
     out = a.out or os.path.join(a.batch, "report")
     os.makedirs(out, exist_ok=True)
-    runs = load_runs(a.batch)
+    try:
+        runs = load_runs(a.batch)
+    except DamagedRun as e:
+        print(f"report.py: {e}", file=sys.stderr)
+        return 1
     for f in load_failures(a.batch):  # left out of the figures; gdnav report lists them with their last log lines
         print(f"report.py: run {f['run']} failed (exit code {f.get('exit_code')}): {f.get('cause', '')}", file=sys.stderr)
     if not runs:

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Interactive flight review pages of a gdnav Monte Carlo batch (self-contained HTML, plotly).
+"""Interactive flight review pages of a gdnav Monte Carlo batch (HTML that opens offline, plotly).
 
 usage: /usr/bin/python3 tools/report/review.py BATCH_DIR [--out DIR] [--tables FILE] [--runs-csv FILE] [--jobs N]
        /usr/bin/python3 tools/report/review.py --run RUN_DIR [--out FILE]
@@ -8,14 +8,17 @@ Batch mode (called by `gdnav report` after report.py) writes to DIR (default BAT
   review.html              the batch: the paper-style tables (DIR/tables.md as gdnav report wrote it), across-run
                            mean +- std bands of the errors versus time, final-error scatter (click a point: that
                            run's page) and the list of runs (final errors from DIR/runs.csv)
+  plotly-VERSION.js        plotly.js, one copy that every page of DIR loads
   review/run_NNNN.html     one page per complete run: true and estimated horizontal track, the errors versus time
                            (attitude, altitude, ground speed, horizontal) with the GNSS loss and the faults marked,
                            and the run's events (faults, GNSS fixes and GNSS-denied state, logged component events)
-Run mode writes the page of one run folder (run.h5, metrics.yaml) to FILE (default RUN_DIR/review.html).
+Run mode writes the page of one run folder (run.h5, metrics.yaml) to FILE (default RUN_DIR/review.html), with
+plotly-VERSION.js beside it.
 
 The run pages are written by --jobs worker processes (default: the CPUs this process may use); the batch page's
 bands add the runs in run order whatever the number of workers, so the pages do not depend on it.
-Each page embeds plotly.js (review_page.py) and opens offline. Needs Debian's python3-plotly, -numpy, -h5py, -yaml.
+A page loads plotly.js from its report folder (review_page.py) and opens offline, from the folder it was written
+in or from a copy of the whole folder. Needs Debian's python3-plotly, -numpy, -h5py, -yaml.
 """
 import argparse
 import math
@@ -36,9 +39,10 @@ import numpy as np  # noqa: E402
 import yaml  # noqa: E402
 
 import run_events  # noqa: E402
-from batch_runs import (DEG, Streamed, batch_label, final_distance, load_runs, read_runs_csv, read_table,  # noqa: E402
+from batch_runs import (DEG, DamagedRun, Streamed, batch_label, final_distance, load_runs, read_runs_csv, read_table,  # noqa: E402
                         signal, stopped_note)
-from review_page import Page, esc, markdown_html, rounded, stride_for  # noqa: E402
+from review_page import (PLOTLY_JS, Page, esc, markdown_html, rounded, stride_for,  # noqa: E402
+                         write_plotly_js)
 
 # Error rows of the run and batch pages: (title, [(column of /error, label, scale, decimals)], unit)
 ERROR_ROWS = [
@@ -185,8 +189,9 @@ def run_summary_rows(m):
     return rows
 
 
-def run_page(run_dir, h5, metrics, path, title, back=None):
-    """Write the review page of one run; returns (t, error columns) of its /error table for the batch bands."""
+def run_page(run_dir, h5, metrics, path, title, back=None, lib_dir=None):
+    """Write the review page of one run (plotly.js from LIB_DIR, default the page's folder: review_page.Page.write);
+    returns (t, error columns) of its /error table for the batch bands."""
     t, err, t_gnss = read_table(h5, "error", ERROR_COLUMNS)
     tt, tru, _ = read_table(h5, "truth", TRACK_COLUMNS)
     te, est, _ = read_table(h5, "estimate", TRACK_COLUMNS + ["gnss_denied"])
@@ -229,7 +234,7 @@ def run_page(run_dir, h5, metrics, path, title, back=None):
     rows += [("—", "log", f"{level}: {msg}") for level, msg in untimed]
     rows += [("—", "clock", note) for note in run_events.clock_notes(run_dir)]
     page.table(["t [s]", "source", "event"], rows, right={0})
-    page.write(path)
+    page.write(path, lib_dir)
     return t, err
 
 
@@ -300,12 +305,16 @@ class Progress:
 
 def _run_page_job(job):
     """One run page in a worker process (batch_pages): returns what the batch bands need."""
-    r, path, title = job
-    return run_page(r["dir"], r["h5"], r["metrics"], path, title, back="../review.html")
+    r, path, title, lib_dir = job
+    return run_page(r["dir"], r["h5"], r["metrics"], path, title, back="../review.html", lib_dir=lib_dir)
 
 
 def batch_pages(batch, out, tables_md, runs_csv, jobs=1):
-    runs = load_runs(batch)
+    try:
+        runs = load_runs(batch)
+    except DamagedRun as e:
+        print(f"review.py: {e}", file=sys.stderr)
+        return 1
     if not runs:
         print(f"review.py: no complete run in {batch}/runs", file=sys.stderr)
         return 1
@@ -317,7 +326,8 @@ def batch_pages(batch, out, tables_md, runs_csv, jobs=1):
     stats, pages, t_gnss = Streamed(ERROR_COLUMNS), {}, 100.0
     progress = Progress(len(runs))
     rels = [f"review/{os.path.basename(r['dir'])}.html" for r in runs]
-    work = [(r, os.path.join(out, rel), f"Run {r['index']} — {label}, seed {r['metrics'].get('seed')}")
+    write_plotly_js(out)  # once, before the workers: every page of the report loads this one copy
+    work = [(r, os.path.join(out, rel), f"Run {r['index']} — {label}, seed {r['metrics'].get('seed')}", out)
             for r, rel in zip(runs, rels)]
     jobs = max(1, min(jobs, len(runs)))
     pool = multiprocessing.get_context("fork").Pool(jobs) if jobs > 1 else None
@@ -359,8 +369,8 @@ def batch_pages(batch, out, tables_md, runs_csv, jobs=1):
         page.note("final: at t_end, the end of the flight or, for a run whose estimator stopped, its last step with "
                   "every estimate; distance: flown since t_GNSS up to t_end.")
     page.write(os.path.join(out, "review.html"))
-    size = sum(os.path.getsize(os.path.join(out, p)) for p in list(pages.values()) + ["review.html"])
-    print(f"review.py: {len(runs)} runs -> {os.path.join(out, 'review.html')} and review/run_*.html "
+    size = sum(os.path.getsize(os.path.join(out, p)) for p in list(pages.values()) + ["review.html", PLOTLY_JS])
+    print(f"review.py: {len(runs)} runs -> {os.path.join(out, 'review.html')}, review/run_*.html and {PLOTLY_JS} "
           f"({size / 1e6:.1f} MB in all)", flush=True)
     return 0
 

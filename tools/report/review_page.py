@@ -1,14 +1,18 @@
-"""Self-contained HTML pages of plotly figures, for review.py (gdnav's flight review pages).
+"""HTML pages of plotly figures, for review.py (gdnav's flight review pages).
 
-A page opens offline: plotly.js (Debian's python3-plotly bundle, 8.7 MB of unminified text) is embedded once per
-page, gzip-compressed and base64-encoded (2.5 MB), and unpacked in the browser with DecompressionStream (Chrome 80,
-Firefox 113, Safari 16.4 and later). Each figure is a JSON block that the page draws once plotly.js is loaded; a
-point whose customdata is a page address (".html") opens that page when clicked.
+A page opens offline. plotly.js (Debian's python3-plotly bundle, 8.7 MB of unminified text) is not in the page: it is
+written once per report folder, gzip-compressed and base64-encoded (2.5 MB) as plotly-VERSION.packed.js, beside the
+pages or in a folder above them (the caller names it); each page loads it with a relative <script src> and unpacks it
+with DecompressionStream (Chrome 80, Firefox 113, Safari 16.4 and later), so a 100-run report holds one copy instead
+of a hundred. Each figure is a JSON block, gzip-compressed and base64-encoded the same way, that the page draws once
+plotly.js is loaded; a point whose customdata is a page address (".html") opens that page when clicked.
 """
 import base64
+import functools
 import gzip
 import html
 import json
+import os
 
 import numpy as np
 import plotly
@@ -25,23 +29,34 @@ td.r { text-align: right; font-variant-numeric: tabular-nums; }
 #loading { color: #a00; }
 """
 
-# Unpacks plotly.js, draws every figure, then marks the body (data-plots-ready = number of figures drawn).
+# Unpacks plotly.js (from the shared file) and each figure, draws them, then marks the body (data-plots-ready =
+# number of figures drawn).
 _SCRIPT = """
 (async function () {
   const status = document.getElementById('loading');
   if (typeof DecompressionStream === 'undefined') {
-    status.textContent = 'This browser cannot unpack the embedded plotly.js (DecompressionStream is missing).';
+    status.textContent = 'This browser cannot unpack plotly.js and the figures (DecompressionStream is missing).';
     return;
   }
-  const b64 = document.getElementById('plotly-js-gz').textContent;
-  const raw = atob(b64);
-  const bytes = new Uint8Array(raw.length);
-  for (let i = 0; i < raw.length; ++i) bytes[i] = raw.charCodeAt(i);
-  const code = await new Response(new Blob([bytes]).stream().pipeThrough(new DecompressionStream('gzip'))).text();
-  (0, eval)(code);
+  if (typeof window.gdnavPlotlyPacked !== 'string') {
+    status.textContent = 'plotly.js did not load: ' + document.getElementById('plotly-js').getAttribute('src') +
+      ' is missing (it is written once per report folder, beside or above the pages).';
+    return;
+  }
+  async function unpack(b64) {
+    const raw = atob(b64);
+    const bytes = new Uint8Array(raw.length);
+    for (let i = 0; i < raw.length; ++i) bytes[i] = raw.charCodeAt(i);
+    return new Response(new Blob([bytes]).stream().pipeThrough(new DecompressionStream('gzip'))).text();
+  }
+  (0, eval)(await unpack(window.gdnavPlotlyPacked));
   const divs = document.querySelectorAll('div.plot');
   for (const div of divs) {
-    const spec = JSON.parse(document.getElementById(div.id + '-data').textContent);
+    const spec = JSON.parse(await unpack(document.getElementById(div.id + '-data').textContent));
+    for (const trace of spec.data)  // arrays written once per figure (Page.figure)
+      for (const key of Object.keys(trace))
+        if (trace[key] !== null && typeof trace[key] === 'object' && 'gdnavShared' in trace[key])
+          trace[key] = spec.gdnavShared[trace[key].gdnavShared];
     await Plotly.newPlot(div, spec.data, spec.layout, {responsive: true, displaylogo: false});
     div.on('plotly_click', function (ev) {
       const p = ev && ev.points && ev.points[0];
@@ -53,16 +68,35 @@ _SCRIPT = """
 })();
 """
 
-_plotly_payload = None
+PLOTLY_JS = f"plotly-{plotly.__version__}.packed.js"
 
 
-def plotly_payload():
-    """plotly.js gzip-compressed and base64-encoded (computed once per process)."""
-    global _plotly_payload
-    if _plotly_payload is None:
-        packed = gzip.compress(get_plotlyjs().encode("utf-8"), compresslevel=9, mtime=0)
-        _plotly_payload = base64.b64encode(packed).decode("ascii")
-    return _plotly_payload
+def packed(text):
+    """TEXT gzip-compressed (level 9, no time stamp: the same bytes every time) and base64-encoded."""
+    return base64.b64encode(gzip.compress(text.encode("utf-8"), compresslevel=9, mtime=0)).decode("ascii")
+
+
+@functools.lru_cache(maxsize=1)
+def plotly_js_file():
+    """The bytes of plotly-VERSION.packed.js (computed once per process; forked workers inherit it)."""
+    return (f"// plotly.js {plotly.__version__} (MIT licence, Debian's python3-plotly bundle), gzip-compressed and "
+            f"base64-encoded: gdnav's review pages unpack it.\nwindow.gdnavPlotlyPacked = "
+            f'"{packed(get_plotlyjs())}";\n').encode("ascii")
+
+
+def write_plotly_js(folder):
+    """FOLDER/plotly-VERSION.packed.js, written once: kept when already there with the right size. Written under a
+    temporary name and renamed, so worker processes writing pages at the same time never see half a file."""
+    path = os.path.join(folder, PLOTLY_JS)
+    code = plotly_js_file()
+    if os.path.isfile(path) and os.path.getsize(path) == len(code):
+        return path
+    os.makedirs(folder, exist_ok=True)
+    tmp = f"{path}.{os.getpid()}.tmp"
+    with open(tmp, "wb") as f:
+        f.write(code)
+    os.replace(tmp, path)
+    return path
 
 
 def rounded(x, decimals):
@@ -110,22 +144,38 @@ class Page:
 
     def figure(self, fig, name):
         """A plotly figure (graph_objects.Figure) drawn in a div with id NAME."""
-        spec = json.dumps(fig.to_plotly_json(), cls=plotly.utils.PlotlyJSONEncoder, separators=(",", ":"))
-        spec = spec.replace("</", "<\\/")  # never ends the script element
+        spec = json.loads(json.dumps(fig.to_plotly_json(), cls=plotly.utils.PlotlyJSONEncoder))
+        # An array that several traces share (the time axis of ten error curves) is written once: the page puts it
+        # back into each trace before drawing, so the figure is the one given.
+        shared, where = [], {}
+        for trace in spec["data"]:
+            for key in ("x", "y", "customdata"):
+                value = trace.get(key)
+                if not isinstance(value, list) or len(value) < 100:
+                    continue
+                text = json.dumps(value, separators=(",", ":"))
+                if text not in where:
+                    where[text] = len(shared)
+                    shared.append(value)
+                trace[key] = {"gdnavShared": where[text]}
+        spec["gdnavShared"] = shared
+        spec = json.dumps(spec, separators=(",", ":"))
         self.add(f'<div class="plot" id="{esc(name)}"></div>'
-                 f'<script type="application/json" id="{esc(name)}-data">{spec}</script>')
+                 f'<script type="application/octet-stream" id="{esc(name)}-data">{packed(spec)}</script>')
         self.figures += 1
 
-    def write(self, path):
+    def write(self, path, lib_dir=None):
+        """Writes the page to PATH; plotly.js is loaded from LIB_DIR (default: the page's folder), written there once
+        (write_plotly_js)."""
+        lib = write_plotly_js(lib_dir if lib_dir is not None else os.path.dirname(os.path.abspath(path)))
+        src = os.path.relpath(lib, os.path.dirname(os.path.abspath(path))).replace(os.sep, "/")
         with open(path, "w", encoding="utf-8") as f:
             f.write(f'<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8"><title>{esc(self.title)}</title>'
                     f"<style>{_STYLE}</style></head>\n<body>\n"
-                    '<p id="loading">Loading the plots (the plotly.js library is embedded in this page)...</p>\n')
+                    f'<p id="loading">Loading the plots (plotly.js from {esc(src)})...</p>\n')
             for p in self.parts:
                 f.write(p + "\n")
-            f.write('<script type="application/octet-stream" id="plotly-js-gz">')
-            f.write(plotly_payload())
-            f.write(f"</script>\n<script>{_SCRIPT}</script>\n</body></html>\n")
+            f.write(f'<script id="plotly-js" src="{esc(src)}"></script>\n<script>{_SCRIPT}</script>\n</body></html>\n')
 
 
 def markdown_html(text):

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "config/config.hpp"
+#include "files/write_error.hpp"
 
 namespace gdnav::metrics {
 
@@ -103,15 +104,7 @@ std::string to_yaml(const RunRecord& r) {
     return o.str();
 }
 
-void write_run_record(const fs::path& file, const RunRecord& r) {
-    const fs::path tmp = file.string() + ".tmp";
-    {
-        std::ofstream f(tmp, std::ios::trunc);
-        f << to_yaml(r);
-        if (!f) throw std::runtime_error("cannot write " + tmp.string());
-    }
-    fs::rename(tmp, file);
-}
+void write_run_record(const fs::path& file, const RunRecord& r) { files::write_whole(file, to_yaml(r)); }
 
 namespace {
 

@@ -74,7 +74,7 @@ RunRecord make_run_record(const RunMetrics& m, bool complete, std::uint64_t seed
 RunRecord make_unreferenced_record(bool complete, std::uint64_t seed, std::uint64_t run_index, std::uint64_t steps,
                                    double t_gnss_s);
 std::string to_yaml(const RunRecord& r);
-// Writes atomically (temporary file + rename), so a reader never sees half a file.
+// Writes whole or not at all (files::write_whole), so a reader never sees half a file; files::WriteError otherwise.
 void write_run_record(const std::filesystem::path& file, const RunRecord& r);
 // Throws config::ConfigError naming the file and key when the file is missing or malformed, and for a record with
 // `reference: none` (it has no error metrics to read).

@@ -2,12 +2,13 @@
 #include "dds/clock/clock_impl.hpp"
 
 #include <filesystem>
-#include <fstream>
 
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
 #include <spdlog/spdlog.h>
 #include <yaml-cpp/yaml.h>
 
+#include "dds/process/run_cause.hpp"
+#include "files/write_error.hpp"
 #include "framework/graph.hpp"
 
 namespace gdnav::runtime {
@@ -71,10 +72,15 @@ void Clock::Impl::write_faults() const {
     if (rc.out_dir.empty() || schedule.empty()) return;
     std::error_code ec;
     std::filesystem::create_directories(rc.out_dir, ec);
-    std::ofstream f(std::filesystem::path(rc.out_dir) / "faults.yaml");
-    f << "# The fault schedule of this run as applied (scheduled and injected live).\n"
-         "# Reproduce the run: gdnav run --scenario <run.yaml> --faults <this file> (any layout)\n"
-      << schedule.to_yaml() << "\n";
+    try {  // whole or not at all (docs/runtime.md, "Exit codes")
+        files::write_whole(std::filesystem::path(rc.out_dir) / "faults.yaml",
+                           "# The fault schedule of this run as applied (scheduled and injected live).\n"
+                           "# Reproduce the run: gdnav run --scenario <run.yaml> --faults <this file> (any layout)\n" +
+                               schedule.to_yaml() + "\n");
+    } catch (const files::WriteError& e) {
+        spdlog::error("{}", e.what());
+        tell_launcher(e.what());
+    }
 }
 
 }  // namespace gdnav::runtime

@@ -185,7 +185,7 @@ struct Clock::Impl {
 
     void log_progress(double now, bool force);
 
-    void write_summary(bool completed, double now);
+    bool write_summary(bool completed, double now);  // false: it could not be written (logged, told)
 
     int finish(int code, double now);
 

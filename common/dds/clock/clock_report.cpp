@@ -2,11 +2,14 @@
 #include "dds/clock/clock_impl.hpp"
 
 #include <filesystem>
-#include <fstream>
 #include <ostream>
+#include <sstream>
 
 #include <spdlog/spdlog.h>
 #include <yaml-cpp/yaml.h>
+
+#include "dds/process/run_cause.hpp"
+#include "files/write_error.hpp"
 
 namespace gdnav::runtime {
 
@@ -23,11 +26,11 @@ void Clock::Impl::log_progress(double now, bool force) {
                  rc.info.time_of(current), sps, sps * rc.info.dt_s);
 }
 
-void Clock::Impl::write_summary(bool completed, double now) {
-    if (rc.out_dir.empty()) return;
+bool Clock::Impl::write_summary(bool completed, double now) {
+    if (rc.out_dir.empty()) return true;
     std::error_code ec;
     std::filesystem::create_directories(rc.out_dir, ec);
-    std::ofstream f(std::filesystem::path(rc.out_dir) / "clock_summary.yaml");
+    std::ostringstream f;
     const double wall = now - run_start_s;
     f << "completed: " << (completed ? "true" : "false") << "\n";
     f << "steps_done: " << (completed ? rc.info.steps : current) << "\n";
@@ -62,6 +65,16 @@ void Clock::Impl::write_summary(bool completed, double now) {
              "sample with a bad stamp counted as not available at its step\"\n";
     // Control messages of other runs on the domain (another run token): ignored, so they change nothing.
     f << "foreign_control_messages: " << foreign.count() << "\n";
+    // Whole or not at all: a summary cut short by a full disk must not read as a run's (docs/runtime.md, "Exit
+    // codes"). The launcher then learns the run's cause from the cause pipe.
+    try {
+        files::write_whole(std::filesystem::path(rc.out_dir) / "clock_summary.yaml", f.str());
+    } catch (const files::WriteError& e) {
+        spdlog::error("{}", e.what());
+        tell_launcher(completed ? std::string(e.what()) : abort_reason);
+        return false;
+    }
+    return true;
 }
 
 std::uint64_t Clock::Impl::write_rejected(std::ostream& f) const {
@@ -101,7 +114,7 @@ int Clock::Impl::finish(int code, double now) {
         spdlog::error("run aborted: {}", abort_reason);
     }
     foreign.report();
-    write_summary(code == kExitOk, now);
+    if (!write_summary(code == kExitOk, now) && code == kExitOk) code = kExitWriteFailed;
     control_writer->wait_for_acknowledgments(Duration_t(2, 0));
     return code;
 }

@@ -5,7 +5,10 @@
 
 #include <spdlog/spdlog.h>
 
+#include "files/write_error.hpp"
+
 #include "dds/host/mirror.hpp"
+#include "dds/process/run_cause.hpp"
 #include "dds/process/process_priority.hpp"
 #include "dds/process/process_signals.hpp"
 #include "dds/security/security.hpp"
@@ -112,8 +115,9 @@ bool DdsHost::Impl::tick_over(int& code) {
         return false;
     }
     if (!step_error.empty()) {
-        spdlog::error("{}; leaving the run (exit code {})", step_error, kExitStepFailed);
-        code = kExitStepFailed;
+        code = step_write_failed ? kExitWriteFailed : kExitStepFailed;
+        spdlog::error("{}; leaving the run (exit code {})", step_error, code);
+        tell_launcher(step_error);
         return false;
     }
     if (const double stall = last_loop_s > 0.0 ? own_stall_s(now - last_loop_s) : 0.0; stall > 0.0) {
@@ -157,23 +161,36 @@ int DdsHost::Impl::loop() {
     lock.unlock();
     for (DataReader* r : data_readers()) r->set_listener(nullptr);
     lock.lock();
-    finish(code);
-    return code;
+    const int finish_code = finish(code);
+    return code == kExitOk ? finish_code : code;
 }
 
-void DdsHost::Impl::finish(int code) {
+int DdsHost::Impl::finish(int code) {
+    int finish_code = kExitOk;
     for (auto& l : locals) {
         if (!step_error.empty())
             control.send_status(l, msg::STATUS_ERROR, step_error);  // the clock's reason names the cause
         else if (code != kExitOk)
             control.send_status(l, msg::STATUS_EXIT, "exit code " + std::to_string(code));
-        if (!l.killed) l.comp->finish(code == kExitOk);
+        if (l.killed) continue;
+        // Every member finishes (closes its files) even when another one's finish fails; the first failure is the
+        // process's exit code (6 for a file it could not write, docs/runtime.md "Exit codes").
+        try {
+            l.comp->finish(code == kExitOk);
+        } catch (const std::exception& e) {
+            const std::string line = "member '" + l.comp->name() + "' failed at the end of the run: " + e.what();
+            spdlog::error("{}", line);
+            tell_launcher(line);
+            if (finish_code == kExitOk)
+                finish_code = dynamic_cast<const files::WriteError*>(&e) ? kExitWriteFailed : kExitStepFailed;
+        }
     }
     if (!step_error.empty() || code != kExitOk) control.flush_statuses();
     control.report_foreign();
     inputs.report_lateness(locals, rc.out_dir);
     host::Inputs::report_rejected(locals);
     host::Observers::report(locals, control.timing().ri.steps);
+    return finish_code;
 }
 
 DdsHost::DdsHost(const RunConfig& rc, std::vector<std::unique_ptr<Component>> members, HostOptions opt)

@@ -54,8 +54,10 @@ struct DdsHost::Impl final : host::ControlHandler {
     bool not_in_table{false};
     bool closing{false};
     double last_loop_s{0.0};  // when tick_over last ran (own_stall_s)
-    // A member's step threw: this process leaves the run with exit code 1, telling the clock why (STATUS_ERROR).
+    // A member's step threw: this process leaves the run with exit code 1 (6 when the exception was a
+    // files::WriteError), telling the clock why (STATUS_ERROR) and the launcher too (run_cause.hpp).
     std::string step_error;
+    bool step_write_failed{false};
 
     Impl(const RunConfig& r, std::vector<std::unique_ptr<Component>> m, HostOptions o)
         : rc(r), opt(std::move(o)), owned(std::move(m)) {}
@@ -80,7 +82,7 @@ struct DdsHost::Impl final : host::ControlHandler {
     bool tick_over(int& code);
     int loop();
     // The end of the run: the members finish, then the reports.
-    void finish(int code);
+    int finish(int code);  // kExitOk, or the exit code of the first member whose finish threw
 
     // ControlHandler: the member table, and a longer fault schedule.
     bool configure(const msg::RunControl& c) override;

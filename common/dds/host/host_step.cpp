@@ -3,6 +3,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "files/write_error.hpp"
+
 namespace gdnav::runtime {
 
 bool DdsHost::Impl::advance() {
@@ -44,6 +46,7 @@ void DdsHost::Impl::step(host::Local& l, std::uint64_t k) {
         l.comp->step(ctx);
     } catch (const std::exception& e) {
         // Not into the caller (it may be a Fast DDS listener thread): the main loop ends the run for this process.
+        step_write_failed = dynamic_cast<const files::WriteError*>(&e) != nullptr;
         std::string what = e.what();
         what = what.substr(0, what.find('\n'));  // one line (a Python error carries its traceback)
         step_error = fmt::format("member '{}' failed at step {} (t = {:.2f} s): {}", l.comp->name(), k, ctx.t_s, what)

@@ -1,5 +1,6 @@
 #include "io/flight_log/csv_table.hpp"
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -7,6 +8,7 @@
 #include <stdexcept>
 
 #include "config/config.hpp"
+#include "files/write_error.hpp"
 
 namespace gdnav::app {
 
@@ -140,7 +142,7 @@ void CsvWriter::close() {
     const bool bad = std::ferror(f_) != 0;
     const bool closed = std::fclose(f_) == 0;
     f_ = nullptr;
-    if (bad || !closed) throw std::runtime_error(path_.string() + ": write error");
+    if (bad || !closed) files::throw_write_error(path_, errno ? errno : EIO);
 }
 
 }  // namespace gdnav::app

@@ -3,9 +3,11 @@
 #include <zstd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <stdexcept>
 #include <tuple>
 
+#include "files/write_error.hpp"
 #include "io/mcap/crc32.hpp"
 
 namespace gdnav::mcap {
@@ -14,7 +16,7 @@ Writer::Writer(const std::filesystem::path& file, WriterOptions options) : path_
     if (opt_.compression != "zstd" && !opt_.compression.empty())
         throw std::invalid_argument("mcap: compression '" + opt_.compression + "' (supported: zstd, none)");
     file_ = std::fopen(path_.c_str(), "wb");
-    if (!file_) throw std::runtime_error(path_.string() + ": cannot write");
+    if (!file_) files::throw_write_error(path_, errno);
     std::vector<std::uint8_t> b(kMagic, kMagic + 8);
     ByteWriter w(b);
     const std::size_t at = w.begin_record(Op::Header);
@@ -34,8 +36,7 @@ Writer::~Writer() {
 
 void Writer::emit(const std::vector<std::uint8_t>& bytes, bool data_section) {
     if (!file_) throw std::logic_error("mcap: " + path_.string() + " is closed");
-    if (std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size())
-        throw std::runtime_error(path_.string() + ": write error");
+    if (std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size()) files::throw_write_error(path_, errno);
     if (data_section) data_crc_ = crc32_update(data_crc_, bytes.data(), bytes.size());
     offset_ += bytes.size();
 }
@@ -142,7 +143,7 @@ void Writer::flush_chunk() {
     }
     ci.message_index_length = scratch_.size() - index_begin;
     emit(scratch_, true);
-    if (std::fflush(file_) != 0) throw std::runtime_error(path_.string() + ": write error");
+    if (std::fflush(file_) != 0) files::throw_write_error(path_, errno);
     chunks_.push_back(std::move(ci));
     chunk_.clear();
     chunk_index_.clear();
@@ -288,7 +289,7 @@ void Writer::close() {
     emit(s, false);
     std::FILE* f = file_;
     file_ = nullptr;
-    if (std::fclose(f) != 0) throw std::runtime_error(path_.string() + ": write error");
+    if (std::fclose(f) != 0) files::throw_write_error(path_, errno);
 }
 
 }  // namespace gdnav::mcap

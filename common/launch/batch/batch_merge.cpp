@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include "launch/batch/batch_dir.hpp"
+#include "launch/batch/run_files.hpp"
 #include "config/config.hpp"
 
 namespace gdnav::app {
@@ -94,7 +95,17 @@ MergedRuns merge_complete_runs(const std::vector<fs::path>& dirs) {
                                           " (not the same batch, or not reproducible)");
             m.duplicates.push_back(index);
         }
-    for (const auto& [index, file] : chosen) m.runs.push_back(metrics::read_run_record(file));
+    for (const auto& [index, file] : chosen) {
+        // A run the batch recorded (files.yaml) whose files have changed since is refused, named in one line; runs
+        // of a batch older than files.yaml are read as they are (docs/montecarlo.md, "Damaged runs and a full disk").
+        const fs::path dir = file.parent_path();
+        if (fs::exists(dir / kRunFilesName))
+            if (const std::string damage = run_files_damage(dir, false); !damage.empty())
+                throw config::ConfigError("report: run " + std::to_string(index) + " (" + dir.string() +
+                                          ") is damaged: " + damage +
+                                          "; run the batch's gdnav montecarlo command again to rerun it");
+        m.runs.push_back(metrics::read_run_record(file));
+    }
     const BatchDirInfo info = read_batch_dir(dirs.front());
     if (info.has_range)
         for (std::uint64_t i = info.first; i < info.first + info.runs; ++i)

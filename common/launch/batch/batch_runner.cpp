@@ -21,7 +21,10 @@
 #include "framework/lockstep.hpp"
 #include "framework/run_config.hpp"
 #include "launch/children.hpp"
+#include "files/write_error.hpp"
 #include "launch/batch/batch_failures.hpp"
+#include "launch/batch/batch_prepare.hpp"
+#include "launch/batch/run_files.hpp"
 #include "launch/member_process.hpp"
 #include "framework/scenario_generator.hpp"
 #include "metrics/run_record.hpp"
@@ -81,145 +84,6 @@ std::string hms(double s) {
     return b;
 }
 
-// The scenario every run of the batch reads: the spec's seed and steps applied, the per-run keys removed.
-std::string batch_scenario_text(const BatchSpec& spec) {
-    YAML::Node doc = YAML::Clone(spec.doc);
-    if (spec.seed_given || !doc["run"]["seed"]) doc["run"]["seed"] = spec.seed;
-    if (spec.steps > 0) {
-        doc["run"].remove("duration_s");
-        doc["run"]["steps"] = spec.steps;
-    }
-    doc["run"].remove("run_index");
-    doc["run"].remove("out_dir");
-    doc["run"].remove("domain_id");
-    YAML::Emitter em;
-    em.SetDoublePrecision(17);
-    em << doc;
-    return std::string(em.c_str()) + "\n";
-}
-
-// Writes DIR/scenario.yaml, or checks that an existing one (a batch being resumed) is the same.
-void prepare_batch_dir(const fs::path& dir, const std::string& text) {
-    fs::create_directories(dir / "runs");
-    const fs::path file = dir / "scenario.yaml";
-    const std::string content = "# Scenario of this batch (overrides applied); written by gdnav montecarlo\n" + text;
-    if (fs::exists(file)) {
-        if (read_text(file) != content)
-            throw config::ConfigError("montecarlo: " + dir.string() +
-                                      " holds a batch of a different scenario or settings (scenario.yaml differs); "
-                                      "use another --out or remove the folder");
-        return;
-    }
-    write_file_atomic(file, content);  // shards sharing DIR may write it at the same time (the same text)
-}
-
-// DIR/batch.yaml: the same text from every shard of a batch (they may share DIR); a whole batch records its jobs.
-void write_batch_record(const BatchSpec& spec, const fs::path& dir, std::uint64_t seed, const Shard& shard) {
-    const std::string generator =
-        spec.doc["generator"] && spec.doc["generator"]["name"] ? spec.doc["generator"]["name"].Scalar() : "";
-    std::ostringstream b;
-    b << "# gdnav montecarlo batch (the latest invocation)\nscenario: " << spec.scenario
-      << "\nfile: " << spec.file.string() << "\ngenerator: " << (generator.empty() ? "none" : generator)
-      << "\nseed: " << seed << "\nfirst: " << spec.first << "\nruns: " << spec.runs << "\nlayout: " << spec.layout
-      << "\n";
-    if (shard.whole())
-        b << "jobs: " << spec.jobs << "\n";
-    else
-        b << "shards: " << shard.count << "\n";
-    write_file_atomic(dir / "batch.yaml", b.str());
-}
-
-// The batch as validated and recorded in its directory.
-struct PreparedBatch {
-    fs::path dir;
-    std::uint64_t seed{0};
-    double sim_per_run_s{0.0};
-    std::vector<std::uint64_t> mine;  // this shard's run indices
-    int first_domain{-1};             // >= 0: slot k runs on DDS domain first_domain + k
-    YAML::Node doc;                   // DIR/scenario.yaml's document
-};
-
-// The domain of slot 0: --domain, else the document's run.domain_id (a batch's runs cannot share one domain, so a
-// given domain is the first of `jobs` consecutive ones), else none (each run takes a free one).
-int first_domain(const BatchSpec& spec) {
-    int d = spec.domain;
-    std::string key = "--domain";
-    if (d < 0 && spec.doc["run"] && spec.doc["run"]["domain_id"]) {
-        key = "run.domain_id";
-        try {
-            d = spec.doc["run"]["domain_id"].as<int>();
-        } catch (const YAML::Exception&) {
-            d = -1;
-        }
-        if (d < 0 || d > 232)
-            throw config::ConfigError("config error: " + spec.file.string() + ": run.domain_id: must be an integer in [0, 232]");
-    }
-    if (d >= 0 && d + static_cast<int>(spec.jobs) - 1 > 232)
-        throw config::ConfigError("config error: " + key + " " + std::to_string(d) + " with --jobs " +
-                                  std::to_string(spec.jobs) + ": the slots need domains " + std::to_string(d) + ".." +
-                                  std::to_string(d + static_cast<int>(spec.jobs) - 1) + ", above 232 (the highest DDS domain)");
-    return d;
-}
-
-// RUN_DIR/drawn_scenario.yaml: what the scenario's generator drew for this run (framework/scenario_generator.hpp),
-// so that `gdnav compare` can tell by its SHA-256 whether two batches flew the same missions. Nothing when the
-// scenario has no generator. Written beside the run's outputs: no recorded topic or metric changes.
-void write_drawn_scenario(const PreparedBatch& p, std::uint64_t run, const fs::path& run_dir) {
-    const YAML::Node drawn = drawn_scenario(p.doc, p.seed, run, (p.dir / "scenario.yaml").string());
-    if (!drawn || drawn.IsNull()) return;
-    YAML::Emitter em;
-    em.SetDoublePrecision(17);
-    em << drawn;
-    write_file_atomic(run_dir / "drawn_scenario.yaml",
-                      "# Scenario drawn for this run by its generator (components reduced to their type); written by "
-                      "gdnav montecarlo\n" + std::string(em.c_str()) + "\n");
-}
-
-PreparedBatch prepare_batch(const BatchSpec& spec, const ComponentRegistry& reg, const Shard& shard) {
-    const std::string text = batch_scenario_text(spec);
-    // Validate the whole configuration once (run `first`) before starting anything.
-    RunOverrides ro;
-    ro.run_index = spec.first;
-    const RunConfig rc0 = RunConfig::parse(text, spec.file.string(), ro);
-    (void)rc0.build(reg);
-    check_started_members(rc0, spec.layout);
-    {  // every member's command is found (placeholders of a run in the current directory)
-        RunConfig probe = rc0;
-        probe.out_dir = ".";
-        (void)resolve_member_processes(probe);
-    }
-    PreparedBatch p;
-    p.first_domain = first_domain(spec);
-    p.seed = rc0.info.seed;
-    p.sim_per_run_s = static_cast<double>(rc0.info.steps) * rc0.info.dt_s;
-    p.dir = fs::absolute(spec.out);
-    p.doc = YAML::Load(text);
-    prepare_batch_dir(p.dir, text);
-    write_batch_record(spec, p.dir, p.seed, shard);
-    p.mine = shard_runs(spec.first, spec.runs, shard);
-    if (!shard.whole()) write_shard_record(p.dir, shard, spec.jobs, p.mine.size());
-    return p;
-}
-
-// Runs of the shard still to do: those without a complete metrics.yaml of this seed and index.
-std::vector<std::uint64_t> runs_to_do(const PreparedBatch& p, std::size_t& skipped) {
-    std::vector<std::uint64_t> todo;
-    skipped = 0;
-    for (const std::uint64_t i : p.mine) {
-        const fs::path m = p.dir / "runs" / run_dir_name(i) / "metrics.yaml";
-        bool done = false;
-        if (metrics::run_record_complete(m)) {
-            const auto r = metrics::read_run_record(m);
-            done = r.seed == p.seed && r.run_index == i;
-        }
-        if (done)
-            ++skipped;
-        else
-            todo.push_back(i);
-    }
-    return todo;
-}
-
 // The supervision loop of one shard: starts up to `jobs` runs, reaps them, prints progress, stops on Ctrl-C.
 class ShardRun {
 public:
@@ -231,7 +95,7 @@ public:
         exe_ = fs::read_symlink("/proc/self/exe");
         tty_ = isatty(STDERR_FILENO) != 0;
         t0_ = steady_now_s();
-        while ((next_ < todo_.size() && !interrupted_) || !workers_.empty()) {
+        while ((next_ < todo_.size() && !interrupted_ && !write_failed_) || !workers_.empty()) {
             if (stop_requested() && !interrupted_) interrupt();
             start_workers();
             if (reap_one()) continue;
@@ -258,6 +122,12 @@ public:
                 done_now_);
             return kExitInterrupted;
         }
+        if (write_failed_) {
+            spdlog::error("montecarlo: stopped: a run could not write its files; {} complete runs ({} new), {} not "
+                          "started; free space and run the same command again to complete the batch",
+                          skipped_ + done_now_, done_now_, todo_.size() - next_);
+            return kExitWriteFailed;
+        }
         spdlog::info("montecarlo:{} {} complete runs ({} new, {} skipped), {} failed, {:.1f} s", which,
                      skipped_ + done_now_, done_now_, skipped_, failures_.size(), steady_now_s() - t0_);
         return failures_.empty() ? 0 : 1;
@@ -272,8 +142,25 @@ private:
         kill_at_s_ = steady_now_s() + 10.0;
     }
 
+    // The run's failure record (failure.yaml); on a full disk, where even that cannot be written, the cause as far as
+    // the exit code tells it.
+    RunFailure failure_of(const Worker& w, int code) const {
+        RunFailure f;
+        try {
+            f = record_run_failure(w.dir, w.run, code);
+        } catch (const std::exception&) {
+            f.run = w.run;
+            f.exit_code = code;
+            f.log_tail = last_lines(w.dir / "log.txt", 1);
+            f.cause = f.log_tail.empty() ? "(no output in log.txt)" : f.log_tail.back();
+        }
+        if (code == kExitWriteFailed && f.cause.find("cannot write") == std::string::npos)
+            f.cause = "an output file could not be written (exit code 6; " + f.cause + ")";
+        return f;
+    }
+
     void start_workers() {
-        while (!interrupted_ && next_ < todo_.size() && workers_.size() < spec_.jobs) {
+        while (!interrupted_ && !write_failed_ && next_ < todo_.size() && workers_.size() < spec_.jobs) {
             Worker w;
             w.run = todo_[next_++];
             w.slot = free_slot();
@@ -310,12 +197,28 @@ private:
         if (pid <= 0) return false;
         auto it = std::find_if(workers_.begin(), workers_.end(), [pid](const Worker& w) { return w.pid == pid; });
         if (it != workers_.end()) {
-            const int code = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
-            const bool ok = code == 0 && metrics::run_record_complete(it->dir / "metrics.yaml");
+            int code = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
+            bool ok = code == 0 && metrics::run_record_complete(it->dir / "metrics.yaml");
+            if (ok) {
+                try {
+                    write_run_files(it->dir);
+                } catch (const files::WriteError& e) {
+                    spdlog::error("montecarlo: run {}: {}", it->run, e.what());
+                    ok = false;
+                    code = kExitWriteFailed;
+                }
+            }
             if (ok) {
                 ++done_now_;
             } else if (!interrupted_) {
-                failures_.push_back(record_run_failure(it->dir, it->run, code == 0 ? 1 : code));
+                failures_.push_back(failure_of(*it, code == 0 ? 1 : code));
+                if (code == kExitWriteFailed && !write_failed_) {
+                    // Every further run would meet the same full disk: none is started; the batch resumes later.
+                    write_failed_ = true;
+                    spdlog::error("montecarlo: run {} could not write its files ({}); no new run is started. Free "
+                                  "space in {} and run the same command again to go on",
+                                  it->run, failures_.back().cause, p_.dir.string());
+                }
             }
             workers_.erase(it);
             print_progress(false);
@@ -356,6 +259,7 @@ private:
     std::size_t next_{0}, done_now_{0};
     double t0_{0.0}, last_print_{0.0}, kill_at_s_{0.0};
     bool interrupted_{false};
+    bool write_failed_{false};  // a run could not write its files: no new run is started
 };
 
 }  // namespace

@@ -16,14 +16,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void write(const fs::path& p, const std::string& text) {
-    fs::create_directories(p.parent_path());
-    std::ofstream(p) << text;
-}
+using test::write_text;
 
 TEST(BatchFailures, LastLinesSkipBlankLinesAndKeepTheEnd) {
     gdnav::test::TempDir dir;
-    write(dir.path() / "a.txt", "one\n\ntwo\nthree  \n\n");
+    write_text(dir.path() / "a.txt", "one\n\ntwo\nthree  \n\n");
     EXPECT_EQ(last_lines(dir.path() / "a.txt", 2), (std::vector<std::string>{"two", "three"}));
     EXPECT_EQ(last_lines(dir.path() / "a.txt", 10).size(), 3u);
     EXPECT_TRUE(last_lines(dir.path() / "missing", 3).empty());
@@ -34,9 +31,9 @@ TEST(BatchFailures, ARecordedFailureIsSummarisedAndItsMetricsMovedAside) {
     const fs::path run1 = dir.path() / "runs" / run_dir_name(1);
     const std::string cause =
         "[error] run failed: member nav_att (exit code 7), started by gdnav; its output is in runs/run_0001/logs/";
-    write(run1 / "log.txt", "[info] starting\n" + cause + "\n");
-    write(run1 / "logs" / "nav_att.log", "filter: cannot open table\n");
-    write(run1 / "metrics.yaml", "complete: true\n");
+    write_text(run1 / "log.txt", "[info] starting\n" + cause + "\n");
+    write_text(run1 / "logs" / "nav_att.log", "filter: cannot open table\n");
+    write_text(run1 / "metrics.yaml", "complete: true\n");
     const RunFailure f = record_run_failure(run1, 1, 1);
     EXPECT_EQ(f.cause, cause);
     ASSERT_EQ(f.member_tails.size(), 1u);

@@ -153,6 +153,22 @@ class Command(unittest.TestCase):
             self.assertEqual(len(err.splitlines()), 1, err)
             self.assertIn(words, err)
 
+    def test_a_damaged_run_is_named_in_one_line(self):
+        # files.yaml (written by gdnav montecarlo when a run ends) records each file's size; a file that has changed
+        # since makes the batch refused, the run named.
+        base = make_batch(self.root, "base", 4, [(0.002, 10.0), (0.003, 20.0)], self.same)
+        cand = make_batch(self.root, "cand", 4, [(0.001, 11.0), (0.002, 21.0)], self.same)
+        run1 = os.path.join(cand, "runs", "run_0001")
+        with open(os.path.join(run1, "run.h5"), "wb") as fh:
+            fh.write(b"x" * 1000)
+        with open(os.path.join(run1, "files.yaml"), "w") as fh:
+            fh.write('files:\n  "run.h5": {size: 4096, digest: "0"}\n')
+        code, out, err = run(base, cand)
+        self.assertEqual(code, 2)
+        self.assertEqual(err.splitlines(), [f"compare: run 1 ({run1}) is damaged: run.h5 has 1000 bytes, 4096 when "
+                                            "the run ended; run the batch's gdnav montecarlo command again to rerun "
+                                            "it"])
+
 
 if __name__ == "__main__":
     unittest.main()
