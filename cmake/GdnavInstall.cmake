@@ -5,8 +5,8 @@
 # CONFIG)). The launcher, plans, PKI and file formats are not installed: a member never links them.
 include(CMakePackageConfigHelpers)
 set(GDNAV_SHARE_DIR share/gdnav)
-set(_gdnav_exported gdnav_client gdnav_runtime gdnav_dds gdnav_framework gdnav_core gdnav_msgs gdnav_control_model
-  gdnav_guidance_model)
+set(_gdnav_exported gdnav_client gdnav_runtime gdnav_dds gdnav_framework gdnav_core gdnav_gnc gdnav_msgs
+  gdnav_control_model gdnav_guidance_model)
 set_target_properties(gdnav_msgs PROPERTIES EXPORT_NAME msgs)
 install(TARGETS ${_gdnav_exported} EXPORT gdnavTargets ARCHIVE DESTINATION lib)
 install(TARGETS gdnav RUNTIME DESTINATION bin)
@@ -48,7 +48,9 @@ set(_gdnav_moved_headers
   runtime/security/security.hpp dds/security/security.hpp
   runtime/status_filter.hpp dds/filters/status_filter.hpp
   runtime/stride_filter.hpp dds/filters/stride_filter.hpp
-  runtime/topic_types.hpp framework/topic_types.hpp)
+  runtime/topic_types.hpp framework/topic_types.hpp
+  guidance/model/mission.hpp gnc/mission.hpp
+  guidance/model/mission_yaml.hpp gnc/mission_yaml.hpp)
 file(REMOVE_RECURSE ${CMAKE_BINARY_DIR}/compat_headers)  # only the forwarding headers of this list
 while(_gdnav_moved_headers)
   list(POP_FRONT _gdnav_moved_headers _old _new)

@@ -3,7 +3,7 @@
 #include <optional>
 
 #include "flight_physics/model/flight_physics.hpp"
-#include "guidance/model/mission_yaml.hpp"
+#include "gnc/mission_yaml.hpp"
 #include "msgs/messages.hpp"
 #include "framework/msg_eigen.hpp"
 #include "framework/run_config.hpp"

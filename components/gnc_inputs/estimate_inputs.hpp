@@ -3,7 +3,7 @@
 // AttitudeEstimate, PositionEstimate of step k) and their conversion to the plain structs of the GNC models
 // (gnc::ControlEstimates for control, guidance::NavState for guidance). Shared by both component wrappers.
 #include "gnc/control_estimates.hpp"
-#include "guidance/model/trigger.hpp"
+#include "gnc/nav_state.hpp"
 #include "framework/component.hpp"
 #include "msgs/messages.hpp"
 #include "framework/msg_eigen.hpp"

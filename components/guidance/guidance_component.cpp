@@ -9,7 +9,7 @@
 #include "gnc/modes.hpp"
 #include "gnc_inputs/estimate_inputs.hpp"
 #include "guidance/model/guidance.hpp"
-#include "guidance/model/mission_yaml.hpp"
+#include "gnc/mission_yaml.hpp"
 #include "guidance/model/until_aligned.hpp"
 #include "msgs/alignment_messages.hpp"
 #include "framework/run_config.hpp"

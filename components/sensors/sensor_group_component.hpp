@@ -17,7 +17,7 @@
 #include "framework/component.hpp"
 #include "framework/run_config.hpp"
 #include "msgs/messages.hpp"
-#include "sensors/model/alignment.hpp"
+#include "gnc/alignment.hpp"
 #include "sensors/model/suite.hpp"
 
 namespace gdnav::sensors {

@@ -14,7 +14,10 @@ Layers, by folder (lowest first; a layer may use those listed for it):
   components  components/* (wrappers)     io framework core msgs models components
   scenarios   scenarios                   framework core msgs models
   app         app                         everything above
-Also: framework/component.hpp (what every component includes) compiles without any Fast DDS header."""
+Within the models and components layers, a component's files include and link only their own component's (its
+folder under components/) and the rooms every component shares (SHARED_ROOMS); the GNC types two components both
+use live in the core (common/core/gnc). Also: framework/component.hpp (what every component includes) compiles
+without any Fast DDS header."""
 import os
 import re
 import subprocess
@@ -33,6 +36,8 @@ ALLOWED = {
     'scenarios': {'framework', 'core', 'msgs', 'models'},
     'app': {'launch', 'client', 'dds', 'io', 'framework', 'core', 'msgs', 'models', 'components', 'scenarios'},
 }
+# Folders under components/ that are shared rooms, not components: their files may be included by any component.
+SHARED_ROOMS = {'gnc_inputs'}
 # Files generated at build time from the IDL (fastddsgen, cmake/GdnavIdl.cmake): the message layer.
 GENERATED = re.compile(r'^[A-Za-z_]+(PubSubTypes)?\.h$')
 SOURCE_EXT = ('.cpp', '.hpp', '.h')
@@ -50,6 +55,18 @@ def layer_of(rel):
     if parts[0] in ('scenarios', 'app'):
         return parts[0]
     return None
+
+
+def component_of(rel):
+    """The folder under components/ of a file there (a component or a shared room), None elsewhere."""
+    parts = rel.split('/')
+    return parts[1] if parts[0] == 'components' and len(parts) >= 3 else None
+
+
+def crosses(mine, theirs):
+    """A file or target of folder MINE using one of folder THEIRS: refused between two folders under components/,
+    unless THEIRS is a shared room."""
+    return bool(mine and theirs and mine != theirs and theirs not in SHARED_ROOMS)
 
 
 def product_files(root):
@@ -96,6 +113,10 @@ def check_includes(root):
                         continue
                 else:
                     other = layer_of(target)
+                    mine, theirs = component_of(rel), component_of(target)
+                    if crosses(mine, theirs):
+                        errors.append(f'{rel}:{n}: components/{mine} includes components/{theirs} ("{inc}")')
+                        continue
                 if other is None or other == me:
                     continue
                 if other not in ALLOWED[me]:
@@ -104,18 +125,20 @@ def check_includes(root):
 
 
 def cmake_targets(root):
-    """target -> (layer, [linked names]) from add_library/add_executable and target_link_libraries."""
-    defined, links = {}, {}
+    """target -> layer, target -> [linked names], target -> component folder, from add_library/add_executable and
+    target_link_libraries."""
+    defined, links, folder = {}, {}, {}
     for rel in product_files_cmake(root):
         text = open(os.path.join(root, rel), encoding='utf-8').read()
         text = re.sub(r'#[^\n]*', '', text)
         layer = layer_of(os.path.dirname(rel) + '/CMakeLists.txt') if os.path.dirname(rel) else None
         for m in re.finditer(r'(?:add_library|add_executable|gdnav_idl_library)\(\s*([A-Za-z0-9_]+)', text):
             defined[m.group(1)] = layer
+            folder[m.group(1)] = component_of(rel)
         for m in re.finditer(r'target_link_libraries\(\s*([A-Za-z0-9_]+)([^)]*)\)', text):
             names = [w for w in m.group(2).split() if w.startswith('gdnav_')]
             links.setdefault(m.group(1), []).extend(names)
-    return defined, links
+    return defined, links, folder
 
 
 def product_files_cmake(root):
@@ -127,12 +150,15 @@ def product_files_cmake(root):
 
 def check_links(root):
     errors = []
-    defined, links = cmake_targets(root)
+    defined, links, folder = cmake_targets(root)
     for target, names in sorted(links.items()):
         me = defined.get(target)
         if me is None:
             continue
         for name in names:
+            if crosses(folder.get(target), folder.get(name)):
+                errors.append(f'CMake: {target} (components/{folder[target]}) links {name} (components/{folder[name]})')
+                continue
             other = defined.get(name)
             if other is None or other == me:
                 continue

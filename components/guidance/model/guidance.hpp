@@ -16,7 +16,7 @@
 #include <cstdint>
 
 #include "gnc/guidance_output.hpp"
-#include "mission.hpp"
+#include "gnc/mission.hpp"
 #include "trigger.hpp"
 
 namespace gdnav::guidance {

@@ -20,7 +20,7 @@
 #include <array>
 
 #include "math/rotation.hpp"
-#include "mission.hpp"
+#include "gnc/mission.hpp"
 #include "random/stream.hpp"
 
 namespace gdnav::guidance {

@@ -10,24 +10,10 @@
 //   (The reference stores the initial sign for these too, so an operation started after its absolute time would
 //   never end; here it ends at once. For times later than the start both rules agree.)
 // `end` never fires.
-#include "math/rotation.hpp"
-#include "mission.hpp"
+#include "gnc/mission.hpp"
+#include "gnc/nav_state.hpp"
 
 namespace gdnav::guidance {
-
-// The navigation estimates guidance needs (all from the navigation filter output, SI units).
-struct NavState {
-    double airspeed_mps{0.0};         // estimated true airspeed V
-    double pressure_altitude_m{0.0};  // estimated pressure altitude Hp
-    double altitude_m{0.0};           // estimated geometric altitude h
-    double ground_bearing_rad{0.0};   // chi = atan2(v_E, v_N) of the estimated ground velocity
-    double heading_rad{0.0};          // psi, yaw of the estimated body attitude
-    double path_angle_rad{0.0};       // gamma = atan2(-v_D, |v_NE|) of the estimated ground velocity
-};
-
-// Builds NavState from the estimated ground velocity v_n (NED, m/s) and body attitude q_nb (body -> NED).
-NavState make_nav_state(double airspeed_mps, double pressure_altitude_m, double altitude_m, const math::Vec3& v_n_mps,
-                        const math::Quat& q_nb);
 
 class TriggerState {
 public:

@@ -1,6 +1,6 @@
 #include "nav_synthetic.hpp"
 
-#include "sensors/model/alignment.hpp"
+#include "gnc/alignment.hpp"
 
 #include <cmath>
 

@@ -24,7 +24,7 @@
 
 #include "config/config.hpp"
 #include "math/rotation.hpp"
-#include "sensors/model/alignment.hpp"
+#include "gnc/alignment.hpp"
 #include "sensors/model/grades.hpp"
 
 namespace gdnav::sensors {

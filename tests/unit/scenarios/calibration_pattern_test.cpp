@@ -7,7 +7,7 @@
 #include "config/config.hpp"
 #include "earth/wgs84.hpp"
 #include "framework/scenario_generator.hpp"
-#include "guidance/model/mission_yaml.hpp"
+#include "gnc/mission_yaml.hpp"
 #include "paper_scenarios.hpp"
 
 using namespace gdnav;

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "config/config.hpp"
-#include "guidance/model/mission_yaml.hpp"
+#include "gnc/mission_yaml.hpp"
 #include "paper_scenarios.hpp"
 #include "random/stream.hpp"
 #include "framework/scenario_generator.hpp"

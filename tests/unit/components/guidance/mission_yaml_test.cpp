@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "guidance/model/mission_yaml.hpp"
+#include "gnc/mission_yaml.hpp"
 #include "guidance/model/scenario_missions.hpp"
 
 using namespace gdnav::guidance;

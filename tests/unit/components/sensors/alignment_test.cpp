@@ -7,7 +7,7 @@
 
 #include "math/rotation.hpp"
 #include "sensor_test_support.hpp"
-#include "sensors/model/alignment.hpp"
+#include "gnc/alignment.hpp"
 #include "sensors/model/suite.hpp"
 
 using namespace gdnav;

@@ -1,4 +1,4 @@
-#include "mission.hpp"
+#include "gnc/mission.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -6,7 +6,7 @@
 
 #include "math/rotation.hpp"
 
-namespace gdnav::guidance {
+namespace gdnav::gnc {
 
 namespace {
 
@@ -167,4 +167,4 @@ Mission MissionBuilder::build() const {
     return mission_;
 }
 
-}  // namespace gdnav::guidance
+}  // namespace gdnav::gnc

@@ -40,12 +40,17 @@
 #include <filesystem>
 
 #include "config/config.hpp"
-#include "mission.hpp"
+#include "gnc/mission.hpp"
 
-namespace gdnav::guidance {
+namespace gdnav::gnc {
 
 Mission load_mission(const std::filesystem::path& file);
 // Reads a mission from a mapping (a whole file or a section of a scenario file) and calls finish() on it.
 Mission parse_mission(const config::Config& cfg);
 
+}  // namespace gdnav::gnc
+
+namespace gdnav::guidance {  // their names in the guidance model's API, as before
+using gnc::load_mission;
+using gnc::parse_mission;
 }  // namespace gdnav::guidance

@@ -1,8 +1,8 @@
-#include "sensors/model/alignment.hpp"
+#include "gnc/alignment.hpp"
 
 #include <cmath>
 
-namespace gdnav::sensors {
+namespace gdnav::gnc {
 
 using math::Quat;
 using math::Vec3;
@@ -56,4 +56,4 @@ MagAlignment align_mag(const AlignmentErrors& e, const Vec3& mag_err_nT, const V
     return a;
 }
 
-}  // namespace gdnav::sensors
+}  // namespace gdnav::gnc

@@ -1,4 +1,4 @@
-#include "mission_yaml.hpp"
+#include "gnc/mission_yaml.hpp"
 
 #include <optional>
 #include <stdexcept>
@@ -7,7 +7,7 @@
 
 #include "math/rotation.hpp"
 
-namespace gdnav::guidance {
+namespace gdnav::gnc {
 
 namespace {
 
@@ -180,4 +180,4 @@ Mission parse_mission(const Config& cfg) {
 
 Mission load_mission(const std::filesystem::path& file) { return parse_mission(Config::load(file)); }
 
-}  // namespace gdnav::guidance
+}  // namespace gdnav::gnc

@@ -4,7 +4,7 @@
 // Each Operation sets a mode and an SI target for each of the four control channels (gnc::ChannelTargets) and a
 // Trigger that ends it. The mission ends when the last operation's trigger fires or when t >= t_end_s.
 //
-// Triggers (all evaluated at 100 Hz on the navigation estimate, see trigger.hpp):
+// Triggers (all evaluated at 100 Hz on the navigation estimate by guidance, its model's trigger.hpp):
 //   time               t >= value [s]                       (absolute simulated time)
 //   elapsed            t - t_start >= value [s]             (time since the operation started)
 //   bearing            estimated ground bearing chi crosses value [rad]   (wrapped, within +-90 deg)
@@ -28,7 +28,7 @@
 
 #include "gnc/modes.hpp"
 
-namespace gdnav::guidance {
+namespace gdnav::gnc {
 
 enum class TriggerKind : std::uint8_t {
     time,
@@ -123,4 +123,19 @@ private:
     gnc::ChannelTargets current_;
 };
 
+}  // namespace gdnav::gnc
+
+// Their names in the guidance model's API (the mission lived there before it became a shared GNC type).
+namespace gdnav::guidance {
+using gnc::InitialFlight;
+using gnc::initial_flight;
+using gnc::Mission;
+using gnc::MissionBuilder;
+using gnc::Operation;
+using gnc::Trigger;
+using gnc::TriggerKind;
+using gnc::trigger_name;
+using gnc::TurnDirection;
+using gnc::validate;
+using gnc::VerticalDirection;
 }  // namespace gdnav::guidance
