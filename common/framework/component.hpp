@@ -69,44 +69,25 @@ public:
     [[nodiscard]] bool available() const { return data_ != nullptr; }
     [[nodiscard]] bool lost() const { return lost_; }
     [[nodiscard]] const void* data_ptr() const { return data_; }
-    // Stride: the member reads only the samples of steps k with k % stride == 0 (k of the sample: k - 1 for
-    // Lag::Previous); at the other steps the input is absent and never waited for. Set before the member is hosted.
-    // Over DDS the reader asks the producers' writers to send only those steps (a writer-side content filter,
-    // dds/filters/stride_filter.hpp), so the member does not receive the samples between; an observer's input at stride
-    // 10 reads the producers' decimated mirror of the topic instead where they write one (dds/host/mirror.hpp).
-    // set_stride(N) (a member that uses every N-th step) takes the largest divisor of N in [kMinStride, kMaxStride],
-    // or 1 (every sample) when N has none. Why these bounds: with Fast DDS 2.9.1 a writer that filters for a reader
-    // still sends it GAP/HEARTBEAT traffic for the skipped samples; beyond a stride of about 10 that traffic
-    // outweighs the samples saved, and at stride 2 it costs more than sending everything (figures:
-    // docs/notes/runtime-measurements.md, "Which strides pay").
-    static constexpr std::uint64_t kMinStride = 4;
-    static constexpr std::uint64_t kMaxStride = 10;
-    [[nodiscard]] std::uint64_t stride() const { return stride_; }
-    void set_stride(std::uint64_t n) {
-        stride_ = 1;
-        for (std::uint64_t d = n < kMaxStride ? n : kMaxStride; d >= kMinStride; --d)
-            if (n % d == 0) {
-                stride_ = d;
-                break;
-            }
-    }
-    [[nodiscard]] bool on_stride(std::uint64_t sample_step) const { return stride_ == 1 || sample_step % stride_ == 0; }
-    // Executor side.
-    void bind(const void* data) { data_ = data; }
-    void mark_lost() { lost_ = true; data_ = nullptr; }
-    // A scheduled fault: the producer is killed at this step (true) or alive again after a restart (false).
-    void set_lost(bool lost) {
-        lost_ = lost;
-        if (lost) data_ = nullptr;
-    }
+    // A member that uses only every N-th step of this input says so before it is hosted (an observer, e.g. the
+    // live bridge): the executors then deliver only the steps of the stride framework/stride_policy.hpp takes for N
+    // (a divisor of N, so every step the member uses is among them). 1: every step (the default).
+    void set_stride(std::uint64_t n) { wanted_stride_ = n == 0 ? 1 : n; }
+    [[nodiscard]] std::uint64_t wanted_stride() const { return wanted_stride_; }
 
 protected:
     const void* data_{nullptr};
 
 private:
+    friend struct ExecutorAccess;  // binding and loss are the executors' (framework/executor_access.hpp)
+    void bind(const void* data) { data_ = data; }
+    void set_lost(bool lost) {
+        lost_ = lost;
+        if (lost) data_ = nullptr;
+    }
     Lag lag_;
     bool lost_{false};
-    std::uint64_t stride_{1};  // 1 or kMinStride..kMaxStride
+    std::uint64_t wanted_stride_{1};
 };
 
 class OutputBase : public PortBase {
@@ -161,15 +142,15 @@ public:
     // late for its inbox, counting it. Its inputs are still the samples of step k, so what it sees of step k is
     // what every other member saw.
     [[nodiscard]] virtual bool observer() const { return false; }
-    // Mode changes a component wants published on ComponentStatus (e.g. "GNSS lost"); the executor drains it.
-    std::vector<std::string>& pending_status() { return status_; }
 
 protected:
+    // A mode change to publish on ComponentStatus (e.g. "GNSS lost"); the executor drains them after the step.
     void publish_status(std::string message) { status_.push_back(std::move(message)); }
 
 private:
     friend class InputBase;
     friend class OutputBase;
+    friend struct ExecutorAccess;
     std::string name_;
     std::vector<InputBase*> inputs_;
     std::vector<OutputBase*> outputs_;

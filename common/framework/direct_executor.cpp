@@ -7,6 +7,8 @@
 #include <spdlog/spdlog.h>
 
 #include "files/write_error.hpp"
+#include "framework/executor_access.hpp"
+#include "framework/stride_policy.hpp"
 #include "framework/graph.hpp"
 
 namespace gdnav::runtime {
@@ -94,17 +96,17 @@ void DirectExecutor::step(std::uint64_t k) {
         }
         Component* c = order_[i];
         for (const Binding& b : bindings_[i]) {
-            if (!b.input->on_stride(b.previous ? k - 1 : k)) {  // not a step it reads (component.hpp, stride)
-                b.input->bind(nullptr);
+            if (!on_stride(*b.input, b.previous ? k - 1 : k)) {  // not a step it reads (framework/stride_policy.hpp)
+                ExecutorAccess::bind(*b.input, nullptr);
                 continue;
             }
             const void* data = b.previous ? (b.previous->valid ? b.previous->copy : nullptr) : b.producer->data();
             if (b.faults && (b.previous == nullptr || k > 0)) {
                 const auto d = b.faults->apply(b.previous ? k - 1 : k, data);
-                b.input->set_lost(d.lost);
+                ExecutorAccess::set_lost(*b.input, d.lost);
                 data = d.data;
             }
-            b.input->bind(data);
+            ExecutorAccess::bind(*b.input, data);
         }
         try {
             if (profile_ns_.empty()) {
@@ -125,8 +127,8 @@ void DirectExecutor::step(std::uint64_t k) {
                                                  ctx.t_s, what.substr(0, what.find('\n'))));
         }
         for (OutputBase* o : c->outputs()) o->ops().set_stamp(o->data(), run_.run_index, k, ctx.t_s);
-        for (auto& msg : c->pending_status()) spdlog::info("[{}] step {} t={:.2f} s: {}", c->name(), k, ctx.t_s, msg);
-        c->pending_status().clear();
+        for (const auto& msg : ExecutorAccess::take_status(*c))
+            spdlog::info("[{}] step {} t={:.2f} s: {}", c->name(), k, ctx.t_s, msg);
     }
     for (auto& [_, p] : prev_) {
         p->source->ops().copy(p->copy, p->source->data());

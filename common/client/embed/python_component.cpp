@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include "framework/any_output.hpp"
+#include "framework/executor_access.hpp"
 #include "framework/run_members.hpp"
 #include "framework/topic_types.hpp"
 #include "python_errors.hpp"
@@ -70,7 +71,7 @@ std::shared_ptr<Port> Host::output(const std::string& topic) {
     return port;
 }
 
-void Host::publish_status(const std::string& message) { comp().pending_status().push_back(message); }
+void Host::publish_status(const std::string& message) { runtime::ExecutorAccess::publish_status(comp(), message); }
 const std::string& Host::name() const { return comp().name(); }
 std::uint64_t Host::run_id() const { return comp().run_.run_index; }
 StepView Host::step_view() const { return comp().view_; }

@@ -4,6 +4,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "framework/executor_access.hpp"
+
 namespace gdnav::runtime::host {
 
 namespace {
@@ -47,7 +49,7 @@ void Faults::restart(Local& l, std::uint64_t k, std::vector<std::unique_ptr<Comp
     std::unique_ptr<Component> fresh = rebuild_(name);
     for (std::size_t n = 0; n < l.inputs.size(); ++n) {
         l.inputs[n]->port = fresh->inputs()[n];
-        if (l.inputs[n]->lost) l.inputs[n]->port->mark_lost();
+        if (l.inputs[n]->lost) ExecutorAccess::set_lost(*l.inputs[n]->port, true);
     }
     for (std::size_t n = 0; n < l.outputs.size(); ++n) l.outputs[n].port = fresh->outputs()[n];
     for (auto& c : owned)

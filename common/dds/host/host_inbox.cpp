@@ -2,6 +2,8 @@
 
 #include <fastdds/dds/core/status/PublicationMatchedStatus.hpp>
 
+#include "framework/stride_policy.hpp"
+
 namespace gdnav::runtime::host {
 
 long inbox_index(const Channel& ch, std::uint64_t next_step, std::uint64_t s) {
@@ -41,7 +43,7 @@ bool hand_over(const Route& r, const Local& consumer, const void* sample, std::u
         ch.has_latest = true;
         return true;
     }
-    if (!ch.port->on_stride(s)) return true;  // a step the reader does not read (as the DDS stride filter)
+    if (!on_stride(*ch.port, s)) return true;  // a step the reader does not read (as the DDS stride filter)
     if (consumer.observer) ch.saw(s);  // only an observer's lost-step test reads it
     const long i = inbox_index(ch, consumer.next_step, s);
     if (i == kOlder) return true;  // no step of the reader needs it (as with a DDS sample)

@@ -7,7 +7,9 @@
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
 #include <spdlog/spdlog.h>
 
+#include "framework/stride_policy.hpp"
 #include "dds/host/host_observers.hpp"
+#include "framework/executor_access.hpp"
 #include "framework/graph.hpp"
 
 namespace gdnav::runtime::host {
@@ -80,7 +82,7 @@ void Inputs::configure(const Local& l, const std::vector<msg::MemberInfo>& table
             spdlog::warn("member '{}': no member of this run produces '{}'; input treated as lost", l.comp->name(),
                          ch->port->topic());
             ch->lost = true;
-            ch->port->mark_lost();
+            ExecutorAccess::set_lost(*ch->port, true);
         }
         if (free_running_) ch->free = true;
     }
@@ -165,45 +167,45 @@ void Inputs::warn_too_far(const Local& l, Channel& ch, std::uint64_t s) {
 bool Inputs::ready(const Local& l, std::uint64_t k) const {
     for (Channel* ch : l.inputs) {
         if (ch->lost) {
-            ch->port->bind(nullptr);
+            ExecutorAccess::bind(*ch->port, nullptr);
             continue;
         }
         if (ch->free) {
-            ch->port->bind(ch->has_latest ? ch->latest : nullptr);
+            ExecutorAccess::bind(*ch->port, ch->has_latest ? ch->latest : nullptr);
             continue;
         }
         const std::uint64_t lag = static_cast<std::uint64_t>(ch->port->lag());
         if (k < lag) {
-            ch->port->bind(nullptr);
+            ExecutorAccess::bind(*ch->port, nullptr);
             continue;
         }
         const std::uint64_t need = k - lag;
-        if (!ch->port->on_stride(need)) {  // not a step it reads: nothing sent, nothing to wait for
-            ch->port->bind(nullptr);
+        if (!on_stride(*ch->port, need)) {  // not a step it reads: nothing sent, nothing to wait for
+            ExecutorAccess::bind(*ch->port, nullptr);
             continue;
         }
         if (need < ch->lost_until) {  // its producer was dead then
-            ch->port->set_lost(true);
+            ExecutorAccess::set_lost(*ch->port, true);
             continue;
         }
-        if (ch->revived) ch->port->set_lost(false);
+        if (ch->revived) ExecutorAccess::set_lost(*ch->port, false);
         if (ch->faults && ch->faults->producer_killed(need)) {  // nothing was published: do not wait
-            ch->port->set_lost(true);
+            ExecutorAccess::set_lost(*ch->port, true);
             continue;
         }
         const std::size_t i = need % kInboxRing;
         if (!ch->full[i] || ch->slot_step[i] != need) return false;
         if (ch->bad[i]) {  // rejected (a bad stamp): not available at this step, as a dropped sample
-            ch->port->bind(nullptr);
+            ExecutorAccess::bind(*ch->port, nullptr);
             continue;
         }
         if (ch->faults) {
             const auto d = ch->faults->apply(need, ch->slot[i]);
-            ch->port->set_lost(d.lost);
-            ch->port->bind(d.data);
+            ExecutorAccess::set_lost(*ch->port, d.lost);
+            ExecutorAccess::bind(*ch->port, d.data);
             continue;
         }
-        ch->port->bind(ch->slot[i]);
+        ExecutorAccess::bind(*ch->port, ch->slot[i]);
     }
     return true;
 }
@@ -229,7 +231,7 @@ void Inputs::apply_dead_mask(std::uint64_t dead_mask) {
         for (auto i : ch->producers) all_dead = all_dead && ((dead_mask >> i) & 1u);
         if (all_dead) {
             ch->lost = true;
-            ch->port->mark_lost();
+            ExecutorAccess::set_lost(*ch->port, true);
             spdlog::warn("input '{}' lost: its producer was declared dead", ch->port->topic());
         }
     }

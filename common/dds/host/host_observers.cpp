@@ -5,6 +5,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "framework/stride_policy.hpp"
 #include "dds/host/mirror.hpp"
 
 namespace gdnav::runtime::host {
@@ -30,7 +31,7 @@ bool step_missed(const Local& l, std::uint64_t k) {
         const auto lag = static_cast<std::uint64_t>(ch->port->lag());
         if (k < lag) continue;
         const std::uint64_t need = k - lag;
-        if (!ch->port->on_stride(need) || need < ch->lost_until) continue;
+        if (!on_stride(*ch->port, need) || need < ch->lost_until) continue;
         const std::size_t i = need % kInboxRing;
         const bool have = ch->full[i] && ch->slot_step[i] == need;
         if (!have && ch->seen && ch->newest > need) return true;
@@ -46,11 +47,11 @@ void catch_up(Local& l, const Channel& ch, std::uint64_t s) {
 }
 
 DataReader* topic_reader(DdsContext& dds, const Channel& ch, bool observer) {
-    return dds.reader(ch.port->topic(), *ch.ops, kDataReaderProfile, ch.port->stride(), observer);
+    return dds.reader(ch.port->topic(), *ch.ops, kDataReaderProfile, stride_of(*ch.port), observer);
 }
 
 bool Observers::defers(const Local& l, const InputBase& in) const {
-    return l.observer && may_read_mirror(in.stride(), !mirrors());
+    return l.observer && may_read_mirror(stride_of(in), !mirrors());
 }
 
 void Observers::make_readers(std::vector<Local>& locals, const std::vector<msg::MemberInfo>& table, DdsContext& dds,
@@ -69,7 +70,7 @@ void Observers::make_readers(std::vector<Local>& locals, const std::vector<msg::
             std::vector<std::string> names;
             for (auto i : ch->producers) names.push_back(table[i].name().to_string());
             const std::string& topic = ch->port->topic();
-            const bool mirror = reads_mirror(ch->port->stride(), !mirrors(), names, writes_mirror);
+            const bool mirror = reads_mirror(stride_of(*ch->port), !mirrors(), names, writes_mirror);
             ch->reader = mirror ? dds.reader(mirror_topic(topic), *ch->ops, kDataReaderProfile, 1, true)
                                 : topic_reader(dds, *ch, true);
             ch->reader->set_listener(listener, StatusMask::data_available());

@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include "files/write_error.hpp"
+#include "framework/executor_access.hpp"
 
 namespace gdnav::runtime {
 
@@ -59,11 +60,10 @@ void DdsHost::Impl::step(host::Local& l, std::uint64_t k) {
     }
     // A mode change goes to the clock, which logs it for the run: here only at debug level, so that each event is
     // logged once.
-    for (auto& m : l.comp->pending_status()) {
+    for (const auto& m : ExecutorAccess::take_status(*l.comp)) {
         spdlog::debug("[{}] step {} t={:.2f} s: {}", l.comp->name(), k, ctx.t_s, m);
         control.send_status(l, msg::STATUS_MODE, m);
     }
-    l.comp->pending_status().clear();
 }
 
 void DdsHost::Impl::publish(host::Output& o, std::uint64_t k) {

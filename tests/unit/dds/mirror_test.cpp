@@ -6,6 +6,7 @@
 #include <string>
 
 #include "framework/component.hpp"
+#include "framework/stride_policy.hpp"
 #include "dds/host/mirror.hpp"
 
 namespace rt = gdnav::runtime;
@@ -13,8 +14,8 @@ namespace rt = gdnav::runtime;
 TEST(Mirror, TopicNameCarriesTheStride) {
     EXPECT_EQ(rt::kMirrorStride, 10u);
     // A decimation that is a multiple of 10 (the live view's default 10, or 20, 100, 1000) reads at stride 10
-    // (InputBase::set_stride takes the largest divisor up to kMaxStride; StrideFilter tests), which the mirror serves.
-    EXPECT_EQ(rt::InputBase::kMaxStride, rt::kMirrorStride);
+    // (effective_stride takes the largest divisor up to kMaxStride; StrideFilter tests), which the mirror serves.
+    EXPECT_EQ(rt::kMaxStride, rt::kMirrorStride);
     EXPECT_EQ(rt::mirror_topic("gdnav/Truth"), "gdnav/Truth/every_10_steps");
     EXPECT_EQ(rt::mirror_topic("chain/state"), "chain/state/every_10_steps");
 }

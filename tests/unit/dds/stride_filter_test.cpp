@@ -7,6 +7,7 @@
 #include "framework/component.hpp"
 #include "msgs/messages.hpp"
 #include "dds/filters/stride_filter.hpp"
+#include "framework/stride_policy.hpp"
 #include "framework/topic_types.hpp"
 
 namespace rt = gdnav::runtime;
@@ -57,15 +58,15 @@ TEST(StrideFilter, AnInputTakesTheLargestDivisorOfItsDecimationWithinTheBounds) 
         {37, 1}, {74, 1}, {22, 1}};
     for (const auto& [n, want] : cases) {
         in.set_stride(n);
-        EXPECT_EQ(in.stride(), want) << "decimation " << n;
-        EXPECT_LE(in.stride(), rt::InputBase::kMaxStride);
-        EXPECT_TRUE(in.stride() == 1 || in.stride() >= rt::InputBase::kMinStride);
+        EXPECT_EQ(rt::stride_of(in), want) << "decimation " << n;
+        EXPECT_LE(rt::stride_of(in), rt::kMaxStride);
+        EXPECT_TRUE(rt::stride_of(in) == 1 || rt::stride_of(in) >= rt::kMinStride);
         if (n > 0) {
-            EXPECT_EQ(n % in.stride(), 0u) << "the steps it uses are among those it receives";
+            EXPECT_EQ(n % rt::stride_of(in), 0u) << "the steps it uses are among those it receives";
         }
     }
     in.set_stride(10);
-    EXPECT_TRUE(in.on_stride(0));
-    EXPECT_TRUE(in.on_stride(120));
-    EXPECT_FALSE(in.on_stride(125));
+    EXPECT_TRUE(rt::on_stride(in, 0));
+    EXPECT_TRUE(rt::on_stride(in, 120));
+    EXPECT_FALSE(rt::on_stride(in, 125));
 }

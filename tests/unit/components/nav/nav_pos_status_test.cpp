@@ -10,6 +10,7 @@
 #include "nav_chain.hpp"
 #include "nav_components.hpp"
 #include "nav_convert.hpp"
+#include "framework/executor_access.hpp"
 #include "framework/registry.hpp"
 
 using namespace gdnav;
@@ -54,10 +55,10 @@ TEST(NavPosComponent, PublishesGateRejectionsUntrustedAndReacquisitionOnComponen
     msg::AirDataEstimate air_m;
     msg::AttitudeEstimate att_m;
     for (runtime::InputBase* in : c->inputs()) {
-        if (in->topic() == topics::kImu) in->bind(&imu_m);
-        if (in->topic() == topics::kGnss) in->bind(&gnss_m);
-        if (in->topic() == topics::kAirData) in->bind(&air_m);
-        if (in->topic() == topics::kAttitude) in->bind(&att_m);
+        if (in->topic() == topics::kImu) runtime::ExecutorAccess::bind(*in, &imu_m);
+        if (in->topic() == topics::kGnss) runtime::ExecutorAccess::bind(*in, &gnss_m);
+        if (in->topic() == topics::kAirData) runtime::ExecutorAccess::bind(*in, &air_m);
+        if (in->topic() == topics::kAttitude) runtime::ExecutorAccess::bind(*in, &att_m);
     }
     ASSERT_EQ(c->outputs().size(), 1u);
     const auto* out = static_cast<const msg::PositionEstimate*>(c->outputs()[0]->data());
@@ -80,12 +81,11 @@ TEST(NavPosComponent, PublishesGateRejectionsUntrustedAndReacquisitionOnComponen
         to_msg(r.att[k], att_m);
         const runtime::StepContext ctx{k, r.data[k].truth.t_s, 0.01, k + 1 == r.data.size()};
         c->step(ctx);
-        for (auto& m : c->pending_status()) {
+        for (auto& m : runtime::ExecutorAccess::take_status(*c)) {
             std::printf("  status t=%.2f s: %s\n", ctx.t_s, m.c_str());
             status.push_back(m);
             status_t.push_back(ctx.t_s);
         }
-        c->pending_status().clear();
         const PositionEstimate e = from_msg(*out);
         if (e.gnss_denied && first_denied < 0) first_denied = static_cast<int>(k);
         if (first_denied >= 0 && !e.gnss_denied && back < 0) back = static_cast<int>(k);

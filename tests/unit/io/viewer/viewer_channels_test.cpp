@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 
+#include "framework/executor_access.hpp"
 #include "io/recording/record_file.hpp"
 #include "msgs/messages.hpp"
 #include "io/viewer/viewer_channels.hpp"
@@ -90,7 +91,7 @@ TEST(ViewerChannels, ReusesTheOwnersInputsAndEncodesAtDecimatedSteps) {
     p.v_n_mps({30.0, 40.0, 0.0});
     p.gnss_denied(true);
     msg::AirDataEstimate a;
-    owner.truth.bind(&t);
+    runtime::ExecutorAccess::bind(owner.truth, &t);
 
     std::vector<viewer::ViewerMessage> out;
     // Step 10 with Truth only: the three true channels.
@@ -121,9 +122,9 @@ TEST(ViewerChannels, ReusesTheOwnersInputsAndEncodesAtDecimatedSteps) {
 
     // Step 15: between decimated steps, nothing.
     out.clear();
-    find_input(owner, topics::kAttitude)->bind(&q);
-    find_input(owner, topics::kPosition)->bind(&p);
-    find_input(owner, topics::kAirData)->bind(&a);
+    runtime::ExecutorAccess::bind(*find_input(owner, topics::kAttitude), &q);
+    runtime::ExecutorAccess::bind(*find_input(owner, topics::kPosition), &p);
+    runtime::ExecutorAccess::bind(*find_input(owner, topics::kAirData), &a);
     vc.encode({15, 0.15, 0.01, false}, 150'000'000ULL, out);
     EXPECT_TRUE(out.empty());
 
