@@ -21,7 +21,6 @@ A page loads plotly.js from its report folder (review_page.py) and opens offline
 in or from a copy of the whole folder. Needs Debian's python3-plotly, -numpy, -h5py, -yaml.
 """
 import argparse
-import math
 import multiprocessing
 import os
 import sys
@@ -39,8 +38,9 @@ import numpy as np  # noqa: E402
 import yaml  # noqa: E402
 
 import run_events  # noqa: E402
-from batch_runs import (DEG, DamagedRun, Streamed, batch_label, final_distance, load_runs, read_runs_csv, read_table,  # noqa: E402
-                        signal, stopped_note)
+from batch_runs import (DEG, DamagedRun, Streamed, batch_label, load_runs, read_runs_csv, read_table,  # noqa: E402
+                        stopped_note)
+from review_tables import fmt, run_summary_rows  # noqa: E402
 from review_page import (PLOTLY_JS, Page, esc, markdown_html, rounded, stride_for,  # noqa: E402
                          write_plotly_js)
 
@@ -61,12 +61,6 @@ COLORS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd"]
 def fill(color, alpha=0.22):
     """A '#rrggbb' colour as a translucent rgba() for the band fills."""
     return f"rgba({int(color[1:3], 16)}, {int(color[3:5], 16)}, {int(color[5:7], 16)}, {alpha})"
-
-
-def fmt(v, digits=2, signed=False):
-    if v is None or not math.isfinite(v):
-        return "n/a"
-    return f"{v:+.{digits}f}" if signed else f"{v:.{digits}f}"
 
 
 def time_axis(fig, t_gnss, t_end):
@@ -157,36 +151,6 @@ def events_figure(t_fix, denied, faults, timed, t_start, t_end):
     fig.update_layout(title="Sensor and fault events", height=120 + 36 * rows, margin=dict(l=200, r=20, t=50, b=40),
                       xaxis=dict(title="t [s]", range=[t_start, t_end]), showlegend=False)
     return fig
-
-
-def run_summary_rows(m):
-    if m.get("reference") == "none":
-        return [("complete", str(m.get("complete"))),
-                ("reference", "none: no reference trajectory, so no error metrics (docs/replay.md)")]
-    note = stopped_note(m)
-    t_end = float(m.get("t_end_s", float("nan")))
-    final = f"final at t = {t_end:.2f} s" if note else "final"
-    rows = [("complete", str(m.get("complete")))]
-    if note:
-        rows.append(("estimates", "INCOMPLETE: " + note))
-    rows += [("t_end [s]", fmt(t_end, 1))]
-    if note:
-        rows += [("distance since t_GNSS up to t_end [m]", fmt(final_distance(m), 0)),
-                 ("distance since t_GNSS to the end of the flight [m]",
-                  fmt(float(m.get("distance_since_gnss_m") or float("nan")), 0))]
-    else:
-        rows.append(("distance since t_GNSS [m]", fmt(float(m.get("distance_since_gnss_m") or float("nan")), 0)))
-    pct = m.get("final_percent") or {}
-    for key, lab in (("hor_m", "Δx_hor"), ("cross_m", "Δx_cross"), ("along_m", "Δx_along")):
-        p = pct.get(key.split("_")[0])
-        rows.append((f"{final} {lab} [m]", fmt(signal(m, key, "final"), 1, key != "hor_m") +
-                     (f" ({fmt(float(p), 2, key != 'hor_m')} %)" if p is not None else "")))
-    rows += [(f"{final} ĥ−h [m]", fmt(signal(m, "h_m", "final"), 2, True)),
-             (f"{final} v̂_N−v_N, v̂_E−v_E [m/s]",
-              fmt(signal(m, "vn_mps", "final"), 2, True) + ", " + fmt(signal(m, "ve_mps", "final"), 2, True)),
-             ("‖Δr̂‖ mean, max [deg]",
-              fmt(signal(m, "rot_rad", "mean") * DEG, 3) + ", " + fmt(abs(signal(m, "rot_rad", "max")) * DEG, 3))]
-    return rows
 
 
 def run_page(run_dir, h5, metrics, path, title, back=None, lib_dir=None):

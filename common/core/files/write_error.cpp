@@ -36,8 +36,8 @@ void write_all(int fd, const std::filesystem::path& file, std::string_view text)
     if (const int err = write_fd(fd, text); err != 0) throw_write_error(file, err);
 }
 
-void write_whole(const std::filesystem::path& file, std::string_view text) {
-    const std::filesystem::path tmp = file.string() + ".tmp";
+void write_whole(const std::filesystem::path& file, std::string_view text, std::string_view tmp_suffix) {
+    const std::filesystem::path tmp = file.string() + std::string(tmp_suffix);
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0) throw_write_error(file, errno);
     int err = write_fd(fd, text);

@@ -25,9 +25,10 @@ private:
 // Throws WriteError for FILE with strerror(ERRNUM).
 [[noreturn]] void throw_write_error(const std::filesystem::path& file, int errnum);
 
-// Writes TEXT to FILE whole or not at all: into FILE.tmp beside it, closed, then renamed over FILE. On any error the
-// temporary is removed, FILE is left as it was, and WriteError names FILE.
-void write_whole(const std::filesystem::path& file, std::string_view text);
+// Writes TEXT to FILE whole or not at all: into FILE + TMP_SUFFIX beside it, closed, then renamed over FILE. On any
+// error the temporary is removed, FILE is left as it was, and WriteError names FILE. Writers that may share a folder
+// across processes or hosts give a suffix of their own.
+void write_whole(const std::filesystem::path& file, std::string_view text, std::string_view tmp_suffix = ".tmp");
 
 // Writes TEXT at the end of the open descriptor FD of FILE, all of it (retrying short writes); WriteError otherwise.
 void write_all(int fd, const std::filesystem::path& file, std::string_view text);

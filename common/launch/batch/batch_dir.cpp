@@ -1,9 +1,6 @@
 #include "launch/batch/batch_dir.hpp"
 
-#include <fcntl.h>
 #include <unistd.h>
-
-#include <cerrno>
 
 #include <algorithm>
 #include <cstdio>
@@ -46,22 +43,8 @@ std::string run_dir_name(std::uint64_t index) {
 void write_file_atomic(const fs::path& file, const std::string& text) {
     char host[256] = {};
     gethostname(host, sizeof(host) - 1);
-    const fs::path tmp = file.string() + ".tmp." + host + "." + std::to_string(getpid());
-    // As files::write_whole, with a temporary of its own per host and process (shards share the folder).
-    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0) files::throw_write_error(file, errno);
-    try {
-        files::write_all(fd, file, text);
-    } catch (const files::WriteError&) {
-        ::close(fd);
-        ::unlink(tmp.c_str());
-        throw;
-    }
-    if (::close(fd) != 0 || ::rename(tmp.c_str(), file.c_str()) != 0) {
-        const int err = errno;
-        ::unlink(tmp.c_str());
-        files::throw_write_error(file, err);
-    }
+    // A temporary of its own per host and process: shards share the folder.
+    files::write_whole(file, text, std::string(".tmp.") + host + "." + std::to_string(getpid()));
 }
 
 std::string read_text(const fs::path& file) {
