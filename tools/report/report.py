@@ -197,5 +197,16 @@ def main():
     return 0
 
 
+def main_one_line():
+    """main(), with a file the operating system refused (a full disk) as one line and exit code 6, as gdnav's own
+    writers (docs/runtime.md, "Exit codes")."""
+    try:
+        return main()
+    except OSError as e:
+        print(f"report.py: {e.filename}: {e.strerror}" if e.filename else f"report.py: {e}",
+              file=sys.stderr)
+        return 6
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main_one_line())
