@@ -1,6 +1,7 @@
 // nav_att: the attitude filter (model/attitude_filter.hpp); optionally the joint GNSS/INS estimator
-// (model/in_flight_aligner.hpp) in front of it — the in-flight alignment, or through the whole GNSS-aided phase with
-// the variant keep_gnss_calibration — and the GNSS yaw estimator (model/yaw_gsf.hpp).
+// (model/in_flight_aligner.hpp) in front of it — the in-flight alignment, through the whole GNSS-aided phase with the
+// variant gnss_calibration_handover, or in place of it for the whole run with keep_gnss_calibration — and the GNSS
+// yaw estimator (model/yaw_gsf.hpp).
 // When the estimator runs, nav_att is its only owner: it publishes gdnav/NavHandover every step, from which nav_pos
 // takes the aligned flag and, at the hand-over, the accelerometer errors (docs/navigation.md, "In-flight fine
 // alignment").
@@ -54,14 +55,15 @@ GnssYaw parse_gnss_yaw(const config::Config& c) {
 
 // The joint GNSS/INS estimator: the in-flight alignment (`in_flight_alignment: {...}`, in_flight_aligner.hpp; only
 // after a truth-free start, handed over once aligned), or with `aided_attitude: gnss_ins` in the variant file
-// through the whole GNSS-aided phase, handed over at the GNSS loss, from the truth-free start or from the sensors'
-// published alignment, with the variant's `gnss_ins` settings and over them the component's section, if given.
+// through the whole GNSS-aided phase, handed over at the GNSS loss (or, with `denied_attitude: gnss_ins`, never:
+// it goes on after the loss), from the truth-free start or from the sensors' published alignment, with the
+// variant's `gnss_ins` settings and over them the component's section, if given.
 std::optional<InFlightAligner> configure_estimator(const config::Config& cfg, const NavFiles& files, InitMode mode,
                                                    double dt_s) {
     const auto c = cfg.optional_child("in_flight_alignment");
     if (files.aided == AidedAttitude::kGnssIns)
         return InFlightAligner(c ? parse_in_flight_alignment(*c, files.gnss_ins) : files.gnss_ins, dt_s,
-                               HandOver::kAtGnssLoss);
+                               files.denied == DeniedAttitude::kGnssIns ? HandOver::kNever : HandOver::kAtGnssLoss);
     if (!c) return std::nullopt;
     if (mode != InitMode::kMeasurements)
         cfg.fail("in_flight_alignment", "needs init_mode: measurements (it replaces the sensors' published alignment)");
@@ -84,7 +86,7 @@ public:
         }
     }
     void step(const runtime::StepContext& ctx) override {
-        if (estimator_ && !estimator_->handed_over()) {
+        if (estimator_ && estimator_->running()) {
             step_estimator(ctx);
             return;
         }
@@ -95,7 +97,8 @@ public:
 private:
     // Until the hand-over nav_att publishes the estimator's attitude (the attitude filter does not run); at the
     // hand-over the attitude filter starts from it: from its alignment as from the sensors' published one (in-flight
-    // alignment), or from its state and joint covariance at the GNSS loss.
+    // alignment), or from its state and joint covariance at the GNSS loss. With HandOver::kNever the GNSS loss only
+    // ends the estimator's GNSS-aided phase, and nav_att publishes it to the end.
     void step_estimator(const runtime::StepContext& ctx) {
         InFlightAligner& est = *estimator_;
         if (!imu_.available() || !mag_.available() || !air_.available()) return;
@@ -116,6 +119,13 @@ private:
             e = filter_.realign(ctx.k, ctx.t_s, from_msg(imu_.get()), est.alignment());
             publish_status(fmt::format("in-flight alignment at t = {:.2f} s (tilt sigma {:.3f} deg, heading sigma "
                                        "{:.3f} deg): the attitude filter starts from it",
+                                       ctx.t_s, math::rad2deg(est.tilt_sigma_rad()),
+                                       math::rad2deg(est.heading_sigma_rad())));
+        } else if (est.mode() == HandOver::kNever && !est.handed_over() && gnss_lost(ctx, fix)) {
+            est.hand_over(ctx.t_s);
+            e = est.estimate(ctx.k, ctx.t_s);
+            publish_status(fmt::format("GNSS lost at t = {:.2f} s: the GNSS/INS estimator goes on with air data and "
+                                       "the magnetometer (tilt sigma {:.3f} deg, heading sigma {:.3f} deg)",
                                        ctx.t_s, math::rad2deg(est.tilt_sigma_rad()),
                                        math::rad2deg(est.heading_sigma_rad())));
         } else if (est.mode() == HandOver::kAtGnssLoss && gnss_lost(ctx, fix)) {
@@ -154,7 +164,7 @@ private:
         o.t_aligned_s(est.aligned() ? est.t_aligned_s() : 0.0);
         o.handed_over(est.handed_over());
         o.t_handed_over_s(est.handed_over() ? est.t_handed_over_s() : 0.0);
-        o.at_gnss_loss(est.mode() == HandOver::kAtGnssLoss);
+        o.at_gnss_loss(est.mode() != HandOver::kAtAlignment);
         o.tilt_sigma_rad(est.tilt_sigma_rad());
         o.heading_sigma_rad(est.heading_sigma_rad());
         const Alignment al = est.alignment();

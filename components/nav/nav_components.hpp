@@ -15,7 +15,8 @@
 // publishes "GNSS lost: <reason>" on ComponentStatus; it returns to GNSS-aided after 5 consecutive consistent fixes
 // and publishes "GNSS re-acquired". Every filter rejects non-finite or out-of-range samples; the components publish
 // the rejection counts on ComponentStatus (MODE) and log an end-of-run summary (docs/navigation.md, "Input checks").
-// nav_att optionally runs the joint GNSS/INS estimator (in-flight alignment, or the variant keep_gnss_calibration)
+// nav_att optionally runs the joint GNSS/INS estimator (in-flight alignment, or the variants keep_gnss_calibration
+// and gnss_calibration_handover)
 // and publishes it on gdnav/NavHandover, which nav_pos follows (docs/navigation.md, "In-flight alignment").
 #include "framework/registry.hpp"
 

@@ -22,7 +22,7 @@ NavFiles load_nav_files(const config::Config& cfg, bool has_variant) {
     NavFiles f{config::Config::load(cfg.get_file("tuning", "nav/tuning.yaml", dir)),
                has_variant ? config::Config::load(cfg.get_file("variant", "nav/variants/baseline.yaml", dir))
                            : builtin_variant(),
-               AidedAttitude::kPaper, InFlightAlignerSettings{}, 0.0};
+               AidedAttitude::kPaper, DeniedAttitude::kPaper, InFlightAlignerSettings{}, 0.0};
     AirDataFilter{}.configure(f.tuning.child("air"), rnd::Stream{});
     AttitudeFilter{}.configure(f.tuning.child("attitude"), f.variant.child("attitude"), rnd::Stream{});
     PositionFilter position;
@@ -31,6 +31,10 @@ NavFiles load_nav_files(const config::Config& cfg, bool has_variant) {
     f.aided = f.variant.get_choice("aided_attitude", "paper", {"paper", "gnss_ins"}) == "gnss_ins"
                   ? AidedAttitude::kGnssIns
                   : AidedAttitude::kPaper;
+    if (f.variant.get_choice("denied_attitude", "paper", {"paper", "gnss_ins"}) == "gnss_ins") {
+        if (f.aided != AidedAttitude::kGnssIns) f.variant.fail("denied_attitude", "needs aided_attitude: gnss_ins");
+        f.denied = DeniedAttitude::kGnssIns;
+    }
     if (const auto g = f.variant.optional_child("gnss_ins")) {
         if (f.aided != AidedAttitude::kGnssIns) f.variant.fail("gnss_ins", "needs aided_attitude: gnss_ins");
         f.gnss_ins = parse_in_flight_alignment(*g);

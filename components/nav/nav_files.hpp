@@ -18,16 +18,22 @@ namespace gdnav::nav {
 // that hands over to that filter at the GNSS loss (kGnssIns; variant key `aided_attitude: gnss_ins`, docs/navigation.md,
 // "Keeping the GNSS calibration").
 enum class AidedAttitude { kPaper, kGnssIns };
+// After the GNSS loss nav_att publishes the paper's attitude filter, started from the estimator's hand-over (kPaper),
+// or the joint estimator goes on, on air data and the magnetometer (kGnssIns; variant key `denied_attitude: gnss_ins`,
+// which needs `aided_attitude: gnss_ins`).
+enum class DeniedAttitude { kPaper, kGnssIns };
 
 // The tuning file holds one section per filter (air, attitude, position) and a variant file one per filter it changes
-// (attitude, position), the optional `aided_attitude` and, with `aided_attitude: gnss_ins`, the optional `gnss_ins`
-// section (the joint estimator's settings, the keys of `in_flight_alignment`). Each file is validated whole wherever it is read: every
-// section is parsed by its filter's parser and finish() runs on the whole file, so an unknown or misspelt key anywhere
-// in it — also at the top level or in another filter's section — is an error, whichever nav components the run has.
+// (attitude, position), the optional `aided_attitude` and `denied_attitude` and, with `aided_attitude: gnss_ins`, the
+// optional `gnss_ins` section (the joint estimator's settings, the keys of `in_flight_alignment`). Each file is
+// validated whole wherever it is read: every section is parsed by its filter's parser and finish() runs on the whole
+// file, so an unknown or misspelt key anywhere in it — also at the top level or in another filter's section — is an
+// error, whichever nav components the run has.
 struct NavFiles {
     config::Config tuning;   // the whole tuning file
     config::Config variant;  // the whole variant file
     AidedAttitude aided{AidedAttitude::kPaper};
+    DeniedAttitude denied{DeniedAttitude::kPaper};
     InFlightAlignerSettings gnss_ins;  // the variant's `gnss_ins` section over the defaults
     double gnss_loss_timeout_s{0.0};  // the position filter's (tuning `position.gnss_loss_timeout_s`)
 };

@@ -83,10 +83,10 @@ public:
     // Starts again from an alignment made in flight (in_flight_aligner.hpp), as `init.mode: alignment` starts from
     // the sensors' published one: the same P0 policy (align_q_p0, else the alignment's sigma).
     AttitudeEstimate realign(std::uint64_t k, double t_s, const ImuSample& imu, const Alignment& align);
-    // Starts from a joint GNSS/INS estimator's state and the joint covariance of its errors (keep_gnss_calibration,
-    // at the GNSS loss): P = T P_err T^T + the gyro white noise on w_nb, with T carrying the NED-side attitude error
-    // to the quaternion (dq = 0.5 Xi(q) R^T phi) and the gyro error to w_nb (dw_nb = -dE_gyr), so the correlations
-    // between heading, gyro and field errors are kept.
+    // Starts from a joint GNSS/INS estimator's state and the joint covariance of its errors (variant
+    // gnss_calibration_handover, at the GNSS loss): P = T P_err T^T + the gyro white noise on w_nb, with T carrying
+    // the NED-side attitude error to the quaternion (dq = 0.5 Xi(q) R^T phi) and the gyro error to w_nb
+    // (dw_nb = -dE_gyr), so the correlations between heading, gyro and field errors are kept.
     AttitudeEstimate hand_over(std::uint64_t k, double t_s, const AttitudeHandover& h);
 
     AttitudeEstimate step(std::uint64_t k, double t_s, const ImuSample& imu, const MagSample& mag,

@@ -5,6 +5,9 @@
 //          gyr_bias_walk_dps_s_rts [0, 1e-1] (2.84e-4), acc_bias_walk_mps2_s_rts [0, 1e-1] (1.4e-4),
 //          mag_walk_nT_rts [0, 100] (0.1), mag_noise_nT [0.1, 1e4] (50), mag_period_steps [1, 1000] (10),
 //          gnss_hor_sigma_m [0.1, 100] (8), gnss_ver_sigma_m [0.1, 100] (12), gnss_vel_sigma_mps [0.01, 10] (0.075)
+//   air data, wind and M (HandOver::kNever only): wind_sigma_mps [0.01, 50] (3), wind_walk_mps_s_rts [0, 10] (0.05),
+//          air_vel_sigma_mps [0.01, 20] (0.5), air_vel_sigma_denied_mps [0.01, 20] (3), air_period_steps [1, 1000]
+//          (10), mag_scale_sigma [0, 0.1] (7.5e-4), mag_cross_sigma [0, 0.1] (9.16e-4)
 //   hand-over: tilt_sigma_max_deg [0.001, 10] (0.05), heading_sigma_max_deg [0.001, 10] (0.05), hold_s [0, 600] (10),
 //              not_before_s [-1e6, 1e6] (none; a run time [s] before which it does not hand over)
 #include "in_flight_aligner.hpp"
@@ -21,7 +24,7 @@ namespace gdnav::nav {
 using config::Range;
 
 namespace {
-constexpr int kPhi = 0, kV = 3, kP = 6, kBg = 9, kBa = 12, kEm = 15, kBd = 18;
+constexpr int kPhi = 0, kV = 3, kP = 6, kBg = 9, kBa = 12, kEm = 15, kBd = 18, kW = 21, kM = 24;
 using Mat3 = Eigen::Matrix3d;
 
 double deg_key(const config::Config& c, const char* key, double fallback_rad, Range deg) {
@@ -47,6 +50,14 @@ InFlightAlignerSettings parse_in_flight_alignment(const config::Config& c, const
     s.gnss_hor_sigma_m = c.get_double("gnss_hor_sigma_m", s.gnss_hor_sigma_m, Range{0.1, 100.0});
     s.gnss_ver_sigma_m = c.get_double("gnss_ver_sigma_m", s.gnss_ver_sigma_m, Range{0.1, 100.0});
     s.gnss_vel_sigma_mps = c.get_double("gnss_vel_sigma_mps", s.gnss_vel_sigma_mps, Range{0.01, 10.0});
+    s.wind_sigma_mps = c.get_double("wind_sigma_mps", s.wind_sigma_mps, Range{0.01, 50.0});
+    s.wind_walk_mps_s_rts = c.get_double("wind_walk_mps_s_rts", s.wind_walk_mps_s_rts, Range{0.0, 10.0});
+    s.air_vel_sigma_mps = c.get_double("air_vel_sigma_mps", s.air_vel_sigma_mps, Range{0.01, 20.0});
+    s.air_vel_sigma_denied_mps =
+        c.get_double("air_vel_sigma_denied_mps", s.air_vel_sigma_denied_mps, Range{0.01, 20.0});
+    s.air_period_steps = static_cast<int>(c.get_int("air_period_steps", s.air_period_steps, 1, 1000));
+    s.mag_scale_sigma = c.get_double("mag_scale_sigma", s.mag_scale_sigma, Range{0.0, 0.1});
+    s.mag_cross_sigma = c.get_double("mag_cross_sigma", s.mag_cross_sigma, Range{0.0, 0.1});
     s.tilt_sigma_max_rad = deg_key(c, "tilt_sigma_max_deg", s.tilt_sigma_max_rad, Range{0.001, 10.0});
     s.heading_sigma_max_rad = deg_key(c, "heading_sigma_max_deg", s.heading_sigma_max_rad, Range{0.001, 10.0});
     s.hold_s = c.get_double("hold_s", s.hold_s, Range{0.0, 600.0});
@@ -62,6 +73,8 @@ InFlightAligner::InFlightAligner(const InFlightAlignerSettings& s, double dt_s, 
     q_diag_.segment<3>(kBg).setConstant(s_.gyr_bias_walk_rps_s_rts * s_.gyr_bias_walk_rps_s_rts * dt_s_);
     q_diag_.segment<3>(kBa).setConstant(s_.acc_bias_walk_mps2_s_rts * s_.acc_bias_walk_mps2_s_rts * dt_s_);
     q_diag_.segment<6>(kEm).setConstant(s_.mag_walk_nT_rts * s_.mag_walk_nT_rts * dt_s_);
+    if (mode_ == HandOver::kNever)
+        q_diag_.segment<3>(kW).setConstant(s_.wind_walk_mps_s_rts * s_.wind_walk_mps_s_rts * dt_s_);
 }
 
 void InFlightAligner::start(double t_s, const ImuSample& imu, const MagSample& mag, const GnssSample& fix,
@@ -71,7 +84,7 @@ void InFlightAligner::start(double t_s, const ImuSample& imu, const MagSample& m
                             earth::magnetic_model_n(fix.lon_rad, fix.lat_rad));
     w_nb_b_ = imu.w_b_rps;
     e_gyr_ = e_acc_ = e_mag_ = b_dev_ = Vec3::Zero();
-    start_common(t_s, fix);
+    start_common(t_s, fix, &air);
     // Attitude: tilt and heading sigmas on the NED side (phi is an NED-side error).
     p_.diagonal().segment<3>(kPhi) << s_.tilt_sigma_rad * s_.tilt_sigma_rad, s_.tilt_sigma_rad * s_.tilt_sigma_rad,
         s_.heading_sigma_rad * s_.heading_sigma_rad;
@@ -81,14 +94,15 @@ void InFlightAligner::start(double t_s, const ImuSample& imu, const MagSample& m
     p_.diagonal().segment<3>(kBd).setConstant(s_.b_dev_sigma_nT * s_.b_dev_sigma_nT);
 }
 
-void InFlightAligner::start(double t_s, const Alignment& align, const ImuSample& imu, const GnssSample& fix) {
+void InFlightAligner::start(double t_s, const Alignment& align, const ImuSample& imu, const GnssSample& fix,
+                            const AirSample* air) {
     q_nb_ = align.q_nb.normalized();
     e_gyr_ = align.gyr_err_rps;
     e_acc_ = align.acc_err_mps2;
     e_mag_ = align.mag_err_nT;
     b_dev_ = align.b_dev_n_nT;
     w_nb_b_ = imu.w_b_rps - e_gyr_;
-    start_common(t_s, fix);
+    start_common(t_s, fix, air);
     p_.diagonal().segment<3>(kPhi).setConstant(align.att_sigma_rad * align.att_sigma_rad);
     p_.diagonal().segment<3>(kBg) = align.gyr_err_sigma_rps.array().square();
     p_.diagonal().segment<3>(kBa) = align.acc_err_sigma_mps2.array().square();
@@ -96,8 +110,9 @@ void InFlightAligner::start(double t_s, const Alignment& align, const ImuSample&
     p_.diagonal().segment<3>(kBd) = align.b_dev_sigma_nT.array().square();
 }
 
-// Position, velocity and their covariance from the fix; the rest of the covariance is the caller's.
-void InFlightAligner::start_common(double t_s, const GnssSample& fix) {
+// Position, velocity and their covariance from the fix, the wind (HandOver::kNever) from the fix and the air data;
+// the rest of the covariance is the caller's.
+void InFlightAligner::start_common(double t_s, const GnssSample& fix, const AirSample* air) {
     v_n_ = fix.v_n_mps;
     lon_rad_ = fix.lon_rad;
     lat_rad_ = fix.lat_rad;
@@ -106,18 +121,34 @@ void InFlightAligner::start_common(double t_s, const GnssSample& fix) {
     p_.diagonal().segment<3>(kV).setConstant(s_.gnss_vel_sigma_mps * s_.gnss_vel_sigma_mps);
     p_.diagonal().segment<3>(kP) << s_.gnss_hor_sigma_m * s_.gnss_hor_sigma_m, s_.gnss_hor_sigma_m * s_.gnss_hor_sigma_m,
         s_.gnss_ver_sigma_m * s_.gnss_ver_sigma_m;
+    wind_n_ = Vec3::Zero();
+    m_mag_.setZero();
+    if (mode_ == HandOver::kNever) {
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                const double sig = i == j ? s_.mag_scale_sigma : s_.mag_cross_sigma;
+                p_(kM + 3 * i + j, kM + 3 * i + j) = sig * sig;
+            }
+        if (air != nullptr)
+            wind_n_ = v_n_ - q_nb_.toRotationMatrix() * math::vtas_body(air->tas_mps, air->aoa_rad, air->aos_rad);
+        p_.diagonal().segment<3>(kW).setConstant(s_.wind_sigma_mps * s_.wind_sigma_mps);
+    }
     steps_ = 0;
     started_ = true;
     aligned_ = handed_over_ = criteria_met_ = false;
     t_criteria_met_s_ = t_aligned_s_ = t_handed_over_s_ = t_s;
 }
 
-bool InFlightAligner::step(double t_s, const ImuSample& imu, const MagSample& mag, const GnssSample* fix) {
-    if (!started_ || handed_over_) return false;
+bool InFlightAligner::step(double t_s, const ImuSample& imu, const MagSample& mag, const GnssSample* fix,
+                           const AirSample* air) {
+    if (!started_ || !running()) return false;
     propagate(imu);
     ++steps_;
     if (steps_ % static_cast<std::uint64_t>(s_.mag_period_steps) == 0) update_mag(mag);
-    if (fix == nullptr || !fix->fix_valid) return false;
+    if (mode_ == HandOver::kNever && air != nullptr &&
+        steps_ % static_cast<std::uint64_t>(s_.air_period_steps) == 0)
+        update_air(*air);
+    if (handed_over_ || fix == nullptr || !fix->fix_valid) return false;
     update_fix(*fix);
     if (aligned_) return false;  // latched: the criteria are not watched any more
     const bool ok = tilt_sigma_rad() <= s_.tilt_sigma_max_rad && heading_sigma_rad() <= s_.heading_sigma_max_rad;
@@ -132,7 +163,7 @@ bool InFlightAligner::step(double t_s, const ImuSample& imu, const MagSample& ma
     if (t_s - t_criteria_met_s_ + 1e-9 < s_.hold_s || t_s < s_.not_before_s) return false;
     aligned_ = true;
     t_aligned_s_ = t_s;
-    if (mode_ == HandOver::kAtGnssLoss) return false;  // it goes on until the loss
+    if (mode_ != HandOver::kAtAlignment) return false;  // it goes on until the loss, or through it
     handed_over_ = true;
     t_handed_over_s_ = t_s;
     return true;
@@ -157,7 +188,7 @@ void InFlightAligner::propagate(const ImuSample& imu) {
     a.block<3, 3>(kV, kBa) = -r;
     a.block<3, 3>(kP, kV) = Mat3::Identity();
     const filters::SqMat<15> phi = filters::transition_matrix<15>(a, dt, 2);
-    filters::propagate_covariance_leading_diag<kN, 15>(p_, phi, q_diag_);
+    filters::propagate_covariance_leading_diag<kN, 15>(p_, phi, q_diag_);  // the wind: a walk, in q_diag_
     // Nominal state.
     const Vec3 w_nb = imu.w_b_rps - e_gyr_ - r.transpose() * (w_ie + w_en);
     w_nb_b_ = w_nb;
@@ -173,11 +204,15 @@ void InFlightAligner::propagate(const ImuSample& imu) {
 void InFlightAligner::update_mag(const MagSample& mag) {
     const Mat3 rt = q_nb_.toRotationMatrix().transpose();
     const Vec3 b_n = earth::magnetic_model_n(lon_rad_, lat_rad_) - b_dev_;
+    const Vec3 b_b = rt * b_n;
+    const Mat3 im = Mat3::Identity() + m_mag_;
     filters::Mat<3, kN> h = filters::Mat<3, kN>::Zero();
-    h.block<3, 3>(0, kPhi) = rt * math::skew(b_n);
+    h.block<3, 3>(0, kPhi) = im * rt * math::skew(b_n);
     h.block<3, 3>(0, kEm) = Mat3::Identity();
-    h.block<3, 3>(0, kBd) = -rt;
-    const filters::Vec<3> r = mag.b_b_nT - (rt * b_n + e_mag_);
+    h.block<3, 3>(0, kBd) = -im * rt;
+    if (mode_ == HandOver::kNever)
+        for (int i = 0; i < 3; ++i) h.block<1, 3>(i, kM + 3 * i) = b_b.transpose();
+    const filters::Vec<3> r = mag.b_b_nT - (im * b_b + e_mag_);
     filters::Vec<kN> dx = filters::Vec<kN>::Zero();
     const auto info = filters::joseph_update<kN, 3>(
         dx, p_, r, h, filters::SqMat<3>::Identity() * (s_.mag_noise_nT * s_.mag_noise_nT));
@@ -201,6 +236,25 @@ void InFlightAligner::update_fix(const GnssSample& fix) {
     if (info.ok) inject(dx);
 }
 
+// The air data's velocity error is not white: the turbulence, the air-data offsets and nav_air's smoothing make it
+// correlated from one update to the next. While GNSS pins the velocity, a tight sigma lets the wind triangle of the
+// turns sharpen the heading; after the loss the same sigma would let the turbulence drive the tilt (and, through the
+// magnetometer's dip coupling, the heading), so the denied phase weighs it less (docs/navigation.md, "Keeping the GNSS
+// calibration").
+void InFlightAligner::update_air(const AirSample& air) {
+    const double sigma = handed_over_ ? s_.air_vel_sigma_denied_mps : s_.air_vel_sigma_mps;
+    const Vec3 a_n = q_nb_.toRotationMatrix() * math::vtas_body(air.tas_mps, air.aoa_rad, air.aos_rad);
+    filters::Mat<3, kN> h = filters::Mat<3, kN>::Zero();
+    h.block<3, 3>(0, kPhi) = math::skew(a_n);
+    h.block<3, 3>(0, kV) = Mat3::Identity();
+    h.block<3, 3>(0, kW) = -Mat3::Identity();
+    const filters::Vec<3> r = a_n + wind_n_ - v_n_;
+    filters::Vec<kN> dx = filters::Vec<kN>::Zero();
+    const auto info = filters::joseph_update<kN, 3>(
+        dx, p_, r, h, filters::SqMat<3>::Identity() * (sigma * sigma));
+    if (info.ok) inject(dx);
+}
+
 void InFlightAligner::inject(const filters::Vec<kN>& dx) {
     q_nb_ = (math::quat_from_rotv(dx.segment<3>(kPhi)) * q_nb_).normalized();
     v_n_ += dx.segment<3>(kV);
@@ -212,6 +266,8 @@ void InFlightAligner::inject(const filters::Vec<kN>& dx) {
     e_acc_ += dx.segment<3>(kBa);
     e_mag_ += dx.segment<3>(kEm);
     b_dev_ += dx.segment<3>(kBd);
+    wind_n_ += dx.segment<3>(kW);
+    for (int i = 0; i < 3; ++i) m_mag_.row(i) += dx.segment<3>(kM + 3 * i).transpose();
 }
 
 double InFlightAligner::tilt_sigma_rad() const { return std::sqrt(std::max(p_(kPhi, kPhi), p_(kPhi + 1, kPhi + 1))); }
@@ -267,13 +323,13 @@ bool step_in_flight_aligner(InFlightAligner& a, double t_s, const ImuSample& imu
     if (!a.started()) {
         if (!fix) return false;
         if (published != nullptr) {
-            if (published->valid()) a.start(t_s, *published, imu, gnss);
+            if (published->valid()) a.start(t_s, *published, imu, gnss, checks::air_ok(air) ? &air : nullptr);
         } else if (checks::air_ok(air)) {
             a.start(t_s, imu, mag, gnss, air);
         }
         return false;
     }
-    return a.step(t_s, imu, mag, fix ? &gnss : nullptr);
+    return a.step(t_s, imu, mag, fix ? &gnss : nullptr, checks::air_ok(air) ? &air : nullptr);
 }
 
 }  // namespace gdnav::nav

@@ -12,14 +12,24 @@
 // filter, the position filter takes the attitude as exact), so the heading and tilt information that the GNSS sees
 // in a turn cannot reach the attitude; here one covariance holds them all.
 //
-// Error state (21), true = estimate + error, the attitude error phi on the NED side (R = exp([phi x]) R_hat):
-//   phi(0..2), dv_n(3..5), dp_NED [m](6..8), dE_gyr(9..11), dE_acc(12..14), dE_mag(15..17), dB_dev(18..20)
+// Error state (33), true = estimate + error, the attitude error phi on the NED side (R = exp([phi x]) R_hat):
+//   phi(0..2), dv_n(3..5), dp_NED [m](6..8), dE_gyr(9..11), dE_acc(12..14), dE_mag(15..17), dB_dev(18..20),
+//   and, used only when the estimator runs through the denied phase (HandOver::kNever): dw_n (21..23, the wind) and
+//   dM (24..32, row by row: the magnetometer's scale factor, cross coupling and soft iron, B~ = (I + M) b + E_mag,
+//   which turns with the aircraft and so is not a constant E_mag once it flies other headings than it was learnt on)
 // Mechanisation (NED, ellipsoidal Earth of nav_earth): w_nb = w~ - E_gyr - R^T (w_ie + w_en);
 //   v_dot = R (f~ - E_acc) + g_n - (2 w_ie + w_en) x v;  (lon, lat, h)_dot from v.
 // Error dynamics: phi_dot = -R dE_gyr;  dv_dot = -[f_n x] phi - R dE_acc;  dp_dot = dv;  errors of E_*, B_dev: walks.
-// Magnetometer (every mag_period_steps): B~ = R^T (B_model - B_dev) + E_mag,
-//   H = [R^T [(B_model - B_dev) x], 0, 0, 0, 0, I, -R^T].
+// Magnetometer (every mag_period_steps): B~ = (I + M) R^T (B_model - B_dev) + E_mag, b = R^T (B_model - B_dev),
+//   H = [(I + M) R^T [(B_model - B_dev) x], 0, 0, 0, 0, I, -(I + M) R^T, 0, I (x) b^T].
 // GNSS fix: position (NED metres from the estimate) and velocity, H = [0 0 I ...; 0 I 0 ...], no lever arm.
+// Air data (HandOver::kNever only, every air_period_steps, before and after the loss): the ground velocity is the air
+// velocity turned to NED plus the wind, v_n = R v_air_b + w_n; residual R_hat v_air_b + w_hat - v_hat,
+//   H = [[(R_hat v_air_b) x], I, 0, 0, 0, 0, 0, -I]; the wind walks (wind_walk_mps_s_rts: the turbulence and the
+// wind's changes). After the loss it is the velocity reference: it holds the tilt through gravity (the velocity's
+// slope is phi x g + R dE_acc + the wind's acceleration) and with the magnetometer at the sensor's own noise keeps
+// the heading, gyro bias and field calibration the GNSS phase found (docs/navigation.md, "Keeping the GNSS
+// calibration").
 // Aligned (latched) at a GNSS fix once tilt and heading sigmas have been below their limits for hold_s, and not
 // before not_before_s (the calibrated scenarios hand over at the paper's t0, where its filters start from the
 // pre-flight alignment). Handed over at that moment, or at the GNSS loss (HandOver::kAtGnssLoss).
@@ -53,6 +63,14 @@ struct InFlightAlignerSettings {
     double gnss_hor_sigma_m{8.0};
     double gnss_ver_sigma_m{12.0};
     double gnss_vel_sigma_mps{0.075};
+    // Air data and wind (HandOver::kNever only).
+    double wind_sigma_mps{3.0};             // at the start, per axis
+    double wind_walk_mps_s_rts{0.05};
+    double air_vel_sigma_mps{0.5};          // per axis, per air-data update, while GNSS is there
+    double air_vel_sigma_denied_mps{3.0};   // the same after the loss (see in_flight_aligner.cpp, update_air)
+    int air_period_steps{10};
+    double mag_scale_sigma{7.5e-4};   // the diagonal of M at the start (the baseline magnetometer's scale factor)
+    double mag_cross_sigma{9.16e-4};  // its other terms (the baseline's cross coupling)
     // Hand-over.
     double tilt_sigma_max_rad{math::deg2rad(0.05)};
     double heading_sigma_max_rad{math::deg2rad(0.05)};
@@ -60,9 +78,10 @@ struct InFlightAlignerSettings {
     double not_before_s{-std::numeric_limits<double>::infinity()};  // no hand-over before this time
 };
 
-// When the estimator hands over to the paper's filters: once aligned (the in-flight alignment), or at the GNSS loss
-// (keep_gnss_calibration: it runs through the whole GNSS-aided phase).
-enum class HandOver { kAtAlignment, kAtGnssLoss };
+// When the estimator hands over to the paper's filters: once aligned (the in-flight alignment), at the GNSS loss
+// (it runs through the whole GNSS-aided phase), or never (it runs through the denied phase too, on air data and the
+// magnetometer; `hand_over()` then only marks the loss).
+enum class HandOver { kAtAlignment, kAtGnssLoss, kNever };
 
 // Reads an `in_flight_alignment` section (every key optional; keys and ranges in in_flight_aligner.cpp); a key not
 // given keeps its value in `base`.
@@ -71,7 +90,7 @@ InFlightAlignerSettings parse_in_flight_alignment(const config::Config& c,
 
 class InFlightAligner {
 public:
-    static constexpr int kN = 21;
+    static constexpr int kN = 33;
     InFlightAligner() = default;
     InFlightAligner(const InFlightAlignerSettings& s, double dt_s, HandOver mode = HandOver::kAtAlignment);
 
@@ -81,15 +100,21 @@ public:
     // Start from a pre-flight alignment (the sensors' published one) on the first step with a valid fix: attitude,
     // sensor and field errors and their 1-sigma from it (the attitude sigma on every axis), position and velocity from
     // the fix.
-    void start(double t_s, const Alignment& align, const ImuSample& imu, const GnssSample& fix);
+    void start(double t_s, const Alignment& align, const ImuSample& imu, const GnssSample& fix,
+               const AirSample* air = nullptr);
     [[nodiscard]] bool started() const { return started_; }
 
     // One step after the start: propagation with this step's IMU sample, the magnetometer every mag_period_steps,
-    // the fix if there is one. True on the one step at which the alignment is handed over (then it stops); with the
-    // hand-over at the GNSS loss never true (hand_over() ends it).
-    bool step(double t_s, const ImuSample& imu, const MagSample& mag, const GnssSample* fix);
-    // Ends the estimator at the GNSS loss (HandOver::kAtGnssLoss): handed over from this step on.
+    // the air data every air_period_steps (HandOver::kNever, when given), the fix if there is one (ignored once
+    // handed over). True on the one step at which the alignment is handed over (then it stops); with the hand-over
+    // at the GNSS loss or never, never true (hand_over() ends the GNSS-aided phase).
+    bool step(double t_s, const ImuSample& imu, const MagSample& mag, const GnssSample* fix,
+              const AirSample* air = nullptr);
+    // The GNSS loss: HandOver::kAtGnssLoss ends the estimator (handed over from this step on); HandOver::kNever marks
+    // the step and goes on without fixes.
     void hand_over(double t_s);
+    // Not finished: waiting for its start, or stepping (unless HandOver::kNever, until handed over).
+    [[nodiscard]] bool running() const { return !handed_over_ || mode_ == HandOver::kNever; }
     [[nodiscard]] HandOver mode() const { return mode_; }
     [[nodiscard]] bool aligned() const { return aligned_; }
     [[nodiscard]] double t_aligned_s() const { return t_aligned_s_; }
@@ -113,8 +138,9 @@ private:
     void propagate(const ImuSample& imu);
     void update_mag(const MagSample& mag);
     void update_fix(const GnssSample& fix);
+    void update_air(const AirSample& air);
     void inject(const filters::Vec<kN>& dx);
-    void start_common(double t_s, const GnssSample& fix);
+    void start_common(double t_s, const GnssSample& fix, const AirSample* air);
 
     InFlightAlignerSettings s_{};
     double dt_s_{0.01};
@@ -132,13 +158,15 @@ private:
     Vec3 v_n_{Vec3::Zero()};
     Vec3 w_nb_b_{Vec3::Zero()};
     double lon_rad_{0.0}, lat_rad_{0.0}, h_m_{0.0};
-    Vec3 e_gyr_{Vec3::Zero()}, e_acc_{Vec3::Zero()}, e_mag_{Vec3::Zero()}, b_dev_{Vec3::Zero()};
+    Vec3 e_gyr_{Vec3::Zero()}, e_acc_{Vec3::Zero()}, e_mag_{Vec3::Zero()}, b_dev_{Vec3::Zero()}, wind_n_{Vec3::Zero()};
+    Eigen::Matrix3d m_mag_{Eigen::Matrix3d::Zero()};
     filters::SqMat<kN> p_{filters::SqMat<kN>::Zero()};
 };
 
 // One step of a component that runs the aligner: starts it on the first step whose IMU, magnetometer and air data
 // samples pass the input checks with a valid fix (from `published` when given: the sensors' pre-flight alignment),
-// steps it after (a sample failing its check skips the step). True on the hand-over step at the alignment.
+// steps it after (an IMU or magnetometer sample failing its check skips the step, air data failing its check skips
+// the air-data update). True on the hand-over step at the alignment.
 bool step_in_flight_aligner(InFlightAligner& a, double t_s, const ImuSample& imu, const MagSample& mag,
                             const GnssSample& gnss, const AirSample& air, const Alignment* published = nullptr);
 

@@ -1,8 +1,9 @@
 // The variant keep_gnss_calibration against the aligned start (the paper's filters from the sensors' published
 // pre-flight alignment) on the same 20 runs of the calibrated scenario #2, seed 1 (docs/results.md, "Beyond the
-// paper"): every run completes and aligns, none diverges, the final horizontal error meets the issue's 135 m target
-// and the mean attitude error is at least 10 % below the aligned start's (measured over 100 runs: −15 %; the −33 %
-// target is not met, docs/results.md says why). A study (label `study`): `ctest -L study` runs it.
+// paper"): every run completes and aligns, none diverges, and the two targets of the calibrated scenario #2 hold:
+// final horizontal error at most 135 m, mean attitude error at most 0.094 deg and at least a third below the aligned
+// start's. Measured on these 20 runs: 123.6 m, 0.085 deg, -39 % (100 runs: 129.6 m, 0.090 deg, -36 %), so each bound
+// has a margin of 8-10 % for the 20-run figure's spread. A study (label `study`): `ctest -L study` runs it.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -22,5 +23,6 @@ TEST(KeepGnssCalibrationBatch, Scenario2CalibratedBeatsTheAlignedStartOn20Runs) 
     std::printf("paper2_calibrated, seed 1, runs 0-%d; metrics from t = 0\n", kRuns - 1);
     print_and_check_runs(al, kg, "keep_gnss_calibration");
     EXPECT_LE(kg.hor_mean, 135.0);
-    EXPECT_LE(kg.att_mean, 0.9 * al.att_mean);
+    EXPECT_LE(kg.att_mean, 0.094);
+    EXPECT_LE(kg.att_mean, 0.67 * al.att_mean);
 }

@@ -1,7 +1,8 @@
 // The variant keep_gnss_calibration (docs/navigation.md, "Keeping the GNSS calibration") in real gdnav runs of the
 // paper's scenario #2, cut 10 s after the GNSS loss: the direct, composed and distributed layouts record the same bits
-// (attitude and position estimates, metrics.yaml); nav_att hands its joint GNSS/INS estimator over to the attitude
-// filter at the step nav_pos goes GNSS-denied, logged once; the variant really changes the run.
+// (attitude and position estimates, metrics.yaml); nav_att's joint GNSS/INS estimator ends its GNSS-aided phase and
+// goes on with air data and the magnetometer at the step nav_pos goes GNSS-denied, logged once; the variant really
+// changes the run.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +12,7 @@
 
 #include "process_util.hpp"
 #include "record_reader.hpp"
+#include "temp_dir.hpp"
 
 using namespace gdnav::testing;
 namespace fs = std::filesystem;
@@ -39,10 +41,11 @@ Flown fly(const std::string& layout, bool variant, const std::string& tag) {
     return f;
 }
 
-// nav_att's hand-over time from its status line, NaN if none.
+// The time nav_att's estimator went on without GNSS, from its status line; NaN if none.
 double handed_over_at(const std::string& log) {
     std::smatch m;
-    if (!std::regex_search(log, m, std::regex("\\[nav_att\\][^\\n]*GNSS lost at t = (-?[0-9.]+) s: the attitude filter")))
+    if (!std::regex_search(log, m,
+                           std::regex("\\[nav_att\\][^\\n]*GNSS lost at t = (-?[0-9.]+) s: the GNSS/INS estimator goes on")))
         return std::nan("");
     return std::stod(m[1]);
 }
@@ -59,9 +62,9 @@ TEST(KeepGnssCalibration, SameBitsInEveryLayoutAndTheHandOverAtTheLossStep) {
         EXPECT_EQ(f->metrics, direct.metrics);
     }
     for (const Flown* f : {&direct, &composed, &distributed}) {
-        EXPECT_EQ(count_of(f->r.output, "the attitude filter takes over from the GNSS/INS estimator"), 1u)
+        EXPECT_EQ(count_of(f->r.output, "the GNSS/INS estimator goes on with air data and the magnetometer"), 1u)
             << f->r.output;
-        // The step nav_pos went denied is the step nav_att handed over.
+        // The step nav_pos went denied is the step nav_att's estimator went on without GNSS.
         const auto pos = read_records<gdnav::msg::PositionEstimate>(f->out, "gdnav/PositionEstimate");
         double t_denied = std::nan("");
         for (const auto& p : pos)
@@ -70,7 +73,8 @@ TEST(KeepGnssCalibration, SameBitsInEveryLayoutAndTheHandOverAtTheLossStep) {
                 break;
             }
         const double t_hand = handed_over_at(f->r.output);
-        std::printf("nav_att handed over at t = %.2f s, nav_pos denied from t = %.2f s\n", t_hand, t_denied);
+        std::printf("nav_att's estimator without GNSS from t = %.2f s, nav_pos denied from t = %.2f s\n", t_hand,
+                    t_denied);
         ASSERT_FALSE(std::isnan(t_hand)) << f->r.output;
         EXPECT_NEAR(t_hand, t_denied, 1e-6);
         EXPECT_GT(t_hand, 100.0);  // the paper's loss at t = 100 s plus the 1.5-s timeout
@@ -88,4 +92,18 @@ TEST(KeepGnssCalibration, TheOldPerComponentAlignerSectionInNavPosIsOneClearErro
                          60.0);
     EXPECT_NE(r.exit_code, 0);
     EXPECT_NE(r.output.find("follow_in_flight_alignment"), std::string::npos) << r.output;
+}
+
+TEST(KeepGnssCalibration, TheDeniedPhaseEstimatorWithoutTheAidedOneIsOneClearError) {
+    const fs::path dir = temp_dir("kgc-bad-variant");
+    const fs::path variant = dir / "denied_only.yaml";
+    gdnav::test::write_text(variant, "denied_attitude: gnss_ins\nattitude: {specific_force: baseline}\n"
+                        "position: {horizontal: frozen_wind, vertical: pressure}\n");
+    const Result r = run({kExe, "run", "--scenario", "paper2", "--steps", "10", "--layout", "direct", "--variant",
+                          variant.string(), "--out", (dir / "out").string()},
+                         60.0);
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.output.find("denied_attitude"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("needs aided_attitude: gnss_ins"), std::string::npos) << r.output;
+    fs::remove_all(dir);
 }

@@ -139,3 +139,46 @@ TEST(NavGnssCalibration, TheAttitudeFilterStartsFromTheJointCovariance) {
         }
     }
 }
+
+// Through the loss (variant keep_gnss_calibration, HandOver::kNever): 120 s of turns with GNSS, then 240 s more of
+// the same turns without it. The estimator goes on with the air data (ground velocity = air velocity + a walking wind)
+// and the magnetometer: its heading sigma stays near what the turns gave it, and its errors stay within their sigmas.
+// The synthetic magnetometer has no scale, cross-coupling or soft-iron error, so the estimator is told so (a prior
+// of zero on M); with the baseline magnetometer's prior the heading after the loss is only as good as the turns
+// taught M (docs/navigation.md, "Keeping the GNSS calibration").
+TEST(NavGnssCalibration, ThroughTheLossTheAirDataAndTheMagnetometerKeepTheHeading) {
+    InFlightAlignerSettings settings;
+    settings.mag_scale_sigma = settings.mag_cross_sigma = 0.0;
+    for (const std::uint64_t seed : {3u, 4u, 5u}) {
+        synth::Generator gen(flight(true), rnd::Stream(seed));
+        const Alignment published = gen.alignment(rnd::Stream(seed + 100));
+        InFlightAligner est(settings, 0.01, HandOver::kNever);
+        double heading_sigma_loss_rad = 0.0, tilt_sigma_loss_rad = 0.0, heading_sigma_120s_rad = 0.0;
+        synth::Truth truth;
+        for (int k = 0; k < 36000; ++k) {
+            synth::Sample s = gen.next();
+            truth = s.truth;
+            if (k >= 12000) s.gnss.fix_valid = false;
+            EXPECT_FALSE(step_in_flight_aligner(est, s.truth.t_s, s.imu, s.mag, s.gnss, s.air, &published));
+            if (k == 12000) {
+                est.hand_over(s.truth.t_s);
+                heading_sigma_loss_rad = est.heading_sigma_rad();
+                tilt_sigma_loss_rad = est.tilt_sigma_rad();
+            }
+            if (k == 24000) heading_sigma_120s_rad = est.heading_sigma_rad();
+        }
+        const Vec3 e = math::rotv_from_quat(est.q_nb() * truth.q_nb.conjugate());
+        std::printf("seed %llu: at the loss heading sigma %.4f deg, tilt sigma %.4f deg; 120 s later heading sigma %.4f "
+                    "deg; 240 s later %.4f / %.4f deg, error heading %+.4f deg, tilt %.4f deg\n",
+                    static_cast<unsigned long long>(seed), math::rad2deg(heading_sigma_loss_rad),
+                    math::rad2deg(tilt_sigma_loss_rad), math::rad2deg(heading_sigma_120s_rad),
+                    math::rad2deg(est.heading_sigma_rad()),
+                    math::rad2deg(est.tilt_sigma_rad()), math::rad2deg(e.z()),
+                    math::rad2deg(std::hypot(e.x(), e.y())));
+        EXPECT_TRUE(est.handed_over());
+        EXPECT_TRUE(est.running());  // it goes on after the loss
+        EXPECT_LT(est.heading_sigma_rad(), 1.1 * heading_sigma_120s_rad);  // settled, not drifting away
+        EXPECT_LT(std::fabs(e.z()), 3.0 * est.heading_sigma_rad() + math::deg2rad(0.005));
+        EXPECT_LT(std::hypot(e.x(), e.y()), 3.0 * est.tilt_sigma_rad() + math::deg2rad(0.005));
+    }
+}
