@@ -26,19 +26,26 @@ struct Flown {
     std::map<std::string, std::string> digests;
 };
 
-Flown fly(const std::string& layout, bool variant, const std::string& tag) {
+Flown fly(const std::string& layout, const std::string& variant, const std::string& tag) {
     Flown f;
     f.out = temp_dir(tag);
     std::vector<std::string> args = {kExe,     "run",    "--scenario", "paper2", "--seed",   "4",
                                      "--run",  "1",      "--steps",    "16000",  "--layout", layout,
                                      "--record", "AttitudeEstimate,PositionEstimate", "--out", f.out.string()};
-    if (variant) args.insert(args.end(), {"--variant", "keep_gnss_calibration"});
+    if (!variant.empty()) args.insert(args.end(), {"--variant", variant});
     f.r = run(args, 300.0);
     EXPECT_EQ(f.r.exit_code, 0) << f.r.output;
     f.metrics = read_file(f.out / "metrics.yaml");
     EXPECT_NE(f.metrics.find("\ncomplete: true\n"), std::string::npos) << tag;
     f.digests = read_digests(f.out);
     return f;
+}
+
+// The first recorded step at which nav_pos is GNSS-denied; NaN if none.
+double first_denied_t(const fs::path& out) {
+    for (const auto& p : read_records<gdnav::msg::PositionEstimate>(out, "gdnav/PositionEstimate"))
+        if (p.gnss_denied()) return p.stamp().t_s();
+    return std::nan("");
 }
 
 // The time nav_att's estimator went on without GNSS, from its status line; NaN if none.
@@ -53,9 +60,10 @@ double handed_over_at(const std::string& log) {
 }  // namespace
 
 TEST(KeepGnssCalibration, SameBitsInEveryLayoutAndTheHandOverAtTheLossStep) {
-    const Flown direct = fly("direct", true, "kgc-direct");
-    const Flown composed = fly("composed", true, "kgc-composed");
-    const Flown distributed = fly("distributed", true, "kgc-distributed");
+    const std::string kgc = "keep_gnss_calibration";
+    const Flown direct = fly("direct", kgc, "kgc-direct");
+    const Flown composed = fly("composed", kgc, "kgc-composed");
+    const Flown distributed = fly("distributed", kgc, "kgc-distributed");
     ASSERT_EQ(direct.digests.size(), 2u) << direct.r.output;
     for (const Flown* f : {&composed, &distributed}) {
         EXPECT_EQ(f->digests, direct.digests);
@@ -65,13 +73,7 @@ TEST(KeepGnssCalibration, SameBitsInEveryLayoutAndTheHandOverAtTheLossStep) {
         EXPECT_EQ(count_of(f->r.output, "the GNSS/INS estimator goes on with air data and the magnetometer"), 1u)
             << f->r.output;
         // The step nav_pos went denied is the step nav_att's estimator went on without GNSS.
-        const auto pos = read_records<gdnav::msg::PositionEstimate>(f->out, "gdnav/PositionEstimate");
-        double t_denied = std::nan("");
-        for (const auto& p : pos)
-            if (p.gnss_denied()) {
-                t_denied = p.stamp().t_s();
-                break;
-            }
+        const double t_denied = first_denied_t(f->out);
         const double t_hand = handed_over_at(f->r.output);
         std::printf("nav_att's estimator without GNSS from t = %.2f s, nav_pos denied from t = %.2f s\n", t_hand,
                     t_denied);
@@ -80,10 +82,22 @@ TEST(KeepGnssCalibration, SameBitsInEveryLayoutAndTheHandOverAtTheLossStep) {
         EXPECT_GT(t_hand, 100.0);  // the paper's loss at t = 100 s plus the 1.5-s timeout
     }
     // The variant is really selected: the paper's filters give other bits.
-    const Flown paper = fly("direct", false, "kgc-paper");
+    const Flown paper = fly("direct", "", "kgc-paper");
     EXPECT_NE(paper.digests, direct.digests);
     EXPECT_EQ(paper.r.output.find("GNSS/INS estimator"), std::string::npos);
     for (const Flown* f : {&direct, &composed, &distributed, &paper}) fs::remove_all(f->out);
+}
+
+// The hand-over form: the paper's attitude filter takes over from the estimator at the step nav_pos goes denied.
+TEST(KeepGnssCalibration, TheHandOverFormHandsOverAtTheLossStep) {
+    const Flown f = fly("direct", "gnss_calibration_handover", "kgc-handover");
+    EXPECT_EQ(count_of(f.r.output, "the attitude filter takes over from the GNSS/INS estimator"), 1u) << f.r.output;
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(
+        f.r.output, m, std::regex("\\[nav_att\\][^\\n]*GNSS lost at t = (-?[0-9.]+) s: the attitude filter takes over")))
+        << f.r.output;
+    EXPECT_NEAR(std::stod(m[1]), first_denied_t(f.out), 1e-6);
+    fs::remove_all(f.out);
 }
 
 TEST(KeepGnssCalibration, TheOldPerComponentAlignerSectionInNavPosIsOneClearError) {
