@@ -32,11 +32,13 @@ NavFiles load_nav_files(const config::Config& cfg, bool has_variant) {
                   ? AidedAttitude::kGnssIns
                   : AidedAttitude::kPaper;
     if (f.variant.get_choice("denied_attitude", "paper", {"paper", "gnss_ins"}) == "gnss_ins") {
-        if (f.aided != AidedAttitude::kGnssIns) f.variant.fail("denied_attitude", "needs aided_attitude: gnss_ins");
+        if (f.aided != AidedAttitude::kGnssIns)
+            f.variant.fail("aided_attitude", "denied_attitude: gnss_ins needs aided_attitude: gnss_ins");
         f.denied = DeniedAttitude::kGnssIns;
     }
     if (const auto g = f.variant.optional_child("gnss_ins")) {
-        if (f.aided != AidedAttitude::kGnssIns) f.variant.fail("gnss_ins", "needs aided_attitude: gnss_ins");
+        if (f.aided != AidedAttitude::kGnssIns)
+            f.variant.fail("aided_attitude", "a gnss_ins section needs aided_attitude: gnss_ins");
         f.gnss_ins = parse_in_flight_alignment(*g);
     }
     f.tuning.finish();
