@@ -121,20 +121,17 @@ private:
                                        "{:.3f} deg): the attitude filter starts from it",
                                        ctx.t_s, math::rad2deg(est.tilt_sigma_rad()),
                                        math::rad2deg(est.heading_sigma_rad())));
-        } else if (est.mode() == HandOver::kNever && !est.handed_over() && gnss_lost(ctx, fix)) {
+        } else if (est.mode() != HandOver::kAtAlignment && !est.handed_over() && gnss_lost(ctx, fix)) {
+            // The GNSS loss: the estimator goes on (HandOver::kNever) or hands over to the attitude filter.
             est.hand_over(ctx.t_s);
-            e = est.estimate(ctx.k, ctx.t_s);
-            publish_status(fmt::format("GNSS lost at t = {:.2f} s: the GNSS/INS estimator goes on with air data and "
-                                       "the magnetometer (tilt sigma {:.3f} deg, heading sigma {:.3f} deg)",
-                                       ctx.t_s, math::rad2deg(est.tilt_sigma_rad()),
-                                       math::rad2deg(est.heading_sigma_rad())));
-        } else if (est.mode() == HandOver::kAtGnssLoss && gnss_lost(ctx, fix)) {
-            est.hand_over(ctx.t_s);
-            e = filter_.hand_over(ctx.k, ctx.t_s, est.handover());
-            publish_status(fmt::format("GNSS lost at t = {:.2f} s: the attitude filter takes over from the GNSS/INS "
-                                       "estimator (tilt sigma {:.3f} deg, heading sigma {:.3f} deg)",
-                                       ctx.t_s, math::rad2deg(est.tilt_sigma_rad()),
-                                       math::rad2deg(est.heading_sigma_rad())));
+            const bool goes_on = est.mode() == HandOver::kNever;
+            e = goes_on ? est.estimate(ctx.k, ctx.t_s) : filter_.hand_over(ctx.k, ctx.t_s, est.handover());
+            publish_status(fmt::format("GNSS lost at t = {:.2f} s: {} (tilt sigma {:.3f} deg, heading sigma "
+                                       "{:.3f} deg)",
+                                       ctx.t_s,
+                                       goes_on ? "the GNSS/INS estimator goes on with air data and the magnetometer"
+                                               : "the attitude filter takes over from the GNSS/INS estimator",
+                                       math::rad2deg(est.tilt_sigma_rad()), math::rad2deg(est.heading_sigma_rad())));
         } else {
             e = est.estimate(ctx.k, ctx.t_s);
         }

@@ -51,8 +51,8 @@ double first_denied_t(const fs::path& out) {
 // The time nav_att's estimator went on without GNSS, from its status line; NaN if none.
 double handed_over_at(const std::string& log) {
     std::smatch m;
-    if (!std::regex_search(log, m,
-                           std::regex("\\[nav_att\\][^\\n]*GNSS lost at t = (-?[0-9.]+) s: the GNSS/INS estimator goes on")))
+    const std::regex line("\\[nav_att\\][^\\n]*GNSS lost at t = (-?[0-9.]+) s: the GNSS/INS estimator goes on");
+    if (!std::regex_search(log, m, line))
         return std::nan("");
     return std::stod(m[1]);
 }
@@ -93,9 +93,8 @@ TEST(KeepGnssCalibration, TheHandOverFormHandsOverAtTheLossStep) {
     const Flown f = fly("direct", "gnss_calibration_handover", "kgc-handover");
     EXPECT_EQ(count_of(f.r.output, "the attitude filter takes over from the GNSS/INS estimator"), 1u) << f.r.output;
     std::smatch m;
-    ASSERT_TRUE(std::regex_search(
-        f.r.output, m, std::regex("\\[nav_att\\][^\\n]*GNSS lost at t = (-?[0-9.]+) s: the attitude filter takes over")))
-        << f.r.output;
+    const std::regex line("\\[nav_att\\][^\\n]*GNSS lost at t = (-?[0-9.]+) s: the attitude filter takes over");
+    ASSERT_TRUE(std::regex_search(f.r.output, m, line)) << f.r.output;
     EXPECT_NEAR(std::stod(m[1]), first_denied_t(f.out), 1e-6);
     fs::remove_all(f.out);
 }

@@ -168,8 +168,8 @@ TEST(NavGnssCalibration, ThroughTheLossTheAirDataAndTheMagnetometerKeepTheHeadin
             if (k == 24000) heading_sigma_120s_rad = est.heading_sigma_rad();
         }
         const Vec3 e = math::rotv_from_quat(est.q_nb() * truth.q_nb.conjugate());
-        std::printf("seed %llu: at the loss heading sigma %.4f deg, tilt sigma %.4f deg; 120 s later heading sigma %.4f "
-                    "deg; 240 s later %.4f / %.4f deg, error heading %+.4f deg, tilt %.4f deg\n",
+        std::printf("seed %llu: at the loss heading sigma %.4f deg, tilt sigma %.4f deg; 120 s later heading sigma "
+                    "%.4f deg; 240 s later %.4f / %.4f deg, error heading %+.4f deg, tilt %.4f deg\n",
                     static_cast<unsigned long long>(seed), math::rad2deg(heading_sigma_loss_rad),
                     math::rad2deg(tilt_sigma_loss_rad), math::rad2deg(heading_sigma_120s_rad),
                     math::rad2deg(est.heading_sigma_rad()),
