@@ -167,6 +167,8 @@ private:
         const Alignment al = est.alignment();
         o.acc_err_b_mps2(to_array(al.acc_err_mps2));
         o.acc_err_sigma_mps2(to_array(al.acc_err_sigma_mps2));
+        o.wind_n_mps(to_array(est.wind_n_mps()));
+        o.air_data_offsets(to_array(est.air_offsets()));
     }
 
     void step_yaw() {

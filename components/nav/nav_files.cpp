@@ -36,6 +36,9 @@ NavFiles load_nav_files(const config::Config& cfg, bool has_variant) {
             f.variant.fail("aided_attitude", "denied_attitude: gnss_ins needs aided_attitude: gnss_ins");
         f.denied = DeniedAttitude::kGnssIns;
     }
+    if (position.tuning().wind_from_gnss_ins && f.denied != DeniedAttitude::kGnssIns)
+        f.variant.child("position").fail("wind_at_loss", "gnss_ins needs denied_attitude: gnss_ins (the joint "
+                                                         "estimator's wind and air-data offsets)");
     if (const auto g = f.variant.optional_child("gnss_ins")) {
         if (f.aided != AidedAttitude::kGnssIns)
             f.variant.fail("aided_attitude", "a gnss_ins section needs aided_attitude: gnss_ins");

@@ -38,9 +38,10 @@ public:
             cfg.fail("in_flight_alignment", "nav_att runs the in-flight alignment and publishes it on "
                                             "gdnav/NavHandover: give the section to nav_att only, and "
                                             "`follow_in_flight_alignment: true` to nav_pos");
-        if (cfg.get_bool("follow_in_flight_alignment", false))
+        follow_ = cfg.get_bool("follow_in_flight_alignment", false);
+        if (follow_ || filter_.tuning().wind_from_gnss_ins)
             handover_ = std::make_unique<Input<msg::NavHandover>>(*this, topics::kHandover);
-        if (monitor_ || handover_)  // only then is there an alignment topic
+        if (monitor_ || follow_)  // only then is there an alignment topic
             align_out_ = std::make_unique<Output<msg::NavAlignment>>(*this, topics::kAlignment);
     }
     void step(const runtime::StepContext& ctx) override {
@@ -48,16 +49,32 @@ public:
         // hand-over): the position filter starts again from its accelerometer errors, as it ran on the estimator's
         // coarse attitude until then. A hand-over at the GNSS loss leaves the position filter alone: it goes denied
         // itself at that step.
-        const bool hand_over = handover_ && handover_->available() && handover_->get().aligned() && !aligned_step_seen_;
+        const bool hand_over = follow_ && handover_->available() && handover_->get().aligned() && !aligned_step_seen_;
         if (hand_over) aligned_step_seen_ = true;
+        if (filter_.tuning().wind_from_gnss_ins) take_gnss_ins_calibration(ctx);
         const std::uint64_t accepted_before = filter_.gate_accepted();
         step_filter(ctx);
         if (hand_over && filter_.initialized()) realign(ctx);
         if (monitor_ && filter_.initialized() && att_.available()) step_monitor(ctx, accepted_before);
-        if (handover_) publish_aligner_flag(ctx);
+        if (follow_) publish_aligner_flag(ctx);
     }
 
 private:
+    // `wind_at_loss: gnss_ins`: the estimator's latest wind and air-data offsets, which the filter keeps from the loss
+    // on; said once if the filter goes denied without them (it then keeps its own wind).
+    void take_gnss_ins_calibration(const runtime::StepContext& ctx) {
+        if (handover_->available() && handover_->get().started()) {
+            const msg::NavHandover& h = handover_->get();
+            filter_.set_gnss_ins_calibration(to_vec3(h.wind_n_mps()), to_vec3(h.air_data_offsets()));
+            calibration_given_ = true;
+        } else if (!calibration_given_ && !calibration_missing_said_ && filter_.gnss_denied()) {
+            calibration_missing_said_ = true;
+            publish_status(fmt::format("GNSS-denied at t = {:.2f} s without the joint estimator's wind (no "
+                                       "gdnav/NavHandover): the position filter keeps its own",
+                                       ctx.t_s));
+        }
+    }
+
     // The position filter starts again with the in-flight alignment's E_acc (the attitude filter has just started
     // again from its attitude; the hand-over step always has a fix).
     void realign(const runtime::StepContext& ctx) {
@@ -203,7 +220,9 @@ private:
     double t_gate_status_s_{-std::numeric_limits<double>::infinity()};
     double t_lost_s_{0.0};
     std::optional<AlignmentMonitor> monitor_;
-    std::unique_ptr<Input<msg::NavHandover>> handover_;  // following the in-flight alignment only
+    std::unique_ptr<Input<msg::NavHandover>> handover_;  // following the in-flight alignment, or wind_at_loss: gnss_ins
+    bool follow_{false};                                  // follow_in_flight_alignment
+    bool calibration_given_{false}, calibration_missing_said_{false};
     bool aligned_step_seen_{false};
     bool aligned_seen_{false};
     std::unique_ptr<Output<msg::NavAlignment>> align_out_;

@@ -7,7 +7,9 @@
 //          gnss_hor_sigma_m [0.1, 100] (8), gnss_ver_sigma_m [0.1, 100] (12), gnss_vel_sigma_mps [0.01, 10] (0.075)
 //   air data, wind and M (HandOver::kNever only): wind_sigma_mps [0.01, 50] (3), wind_walk_mps_s_rts [0, 10] (0.05),
 //          air_vel_sigma_mps [0.01, 20] (0.5), air_vel_sigma_denied_mps [0.01, 20] (3), air_period_steps [1, 1000]
-//          (10), mag_scale_sigma [0, 0.1] (7.5e-4), mag_cross_sigma [0, 0.1] (9.16e-4)
+//          (10), mag_scale_sigma [0, 0.1] (7.5e-4), mag_cross_sigma [0, 0.1] (9.16e-4), turb_sigma_mps [0, 10] (0.3),
+//          turb_tau_s [0.1, 1000] (10), tas_offset_sigma_mps [0, 10] (0.333), aoa_offset_sigma_deg [0, 10] (0.333),
+//          aos_offset_sigma_deg [0, 10] (0.333)
 //   hand-over: tilt_sigma_max_deg [0.001, 10] (0.05), heading_sigma_max_deg [0.001, 10] (0.05), hold_s [0, 600] (10),
 //              not_before_s [-1e6, 1e6] (none; a run time [s] before which it does not hand over)
 #include "in_flight_aligner.hpp"
@@ -24,7 +26,7 @@ namespace gdnav::nav {
 using config::Range;
 
 namespace {
-constexpr int kPhi = 0, kV = 3, kP = 6, kBg = 9, kBa = 12, kEm = 15, kBd = 18, kW = 21, kM = 24;
+constexpr int kPhi = 0, kV = 3, kP = 6, kBg = 9, kBa = 12, kEm = 15, kBd = 18, kW = 21, kM = 24, kT = 33, kAd = 36;
 using Mat3 = Eigen::Matrix3d;
 
 double deg_key(const config::Config& c, const char* key, double fallback_rad, Range deg) {
@@ -58,6 +60,11 @@ InFlightAlignerSettings parse_in_flight_alignment(const config::Config& c, const
     s.air_period_steps = static_cast<int>(c.get_int("air_period_steps", s.air_period_steps, 1, 1000));
     s.mag_scale_sigma = c.get_double("mag_scale_sigma", s.mag_scale_sigma, Range{0.0, 0.1});
     s.mag_cross_sigma = c.get_double("mag_cross_sigma", s.mag_cross_sigma, Range{0.0, 0.1});
+    s.turb_sigma_mps = c.get_double("turb_sigma_mps", s.turb_sigma_mps, Range{0.0, 10.0});
+    s.turb_tau_s = c.get_double("turb_tau_s", s.turb_tau_s, Range{0.1, 1000.0});
+    s.tas_offset_sigma_mps = c.get_double("tas_offset_sigma_mps", s.tas_offset_sigma_mps, Range{0.0, 10.0});
+    s.aoa_offset_sigma_rad = deg_key(c, "aoa_offset_sigma_deg", s.aoa_offset_sigma_rad, Range{0.0, 10.0});
+    s.aos_offset_sigma_rad = deg_key(c, "aos_offset_sigma_deg", s.aos_offset_sigma_rad, Range{0.0, 10.0});
     s.tilt_sigma_max_rad = deg_key(c, "tilt_sigma_max_deg", s.tilt_sigma_max_rad, Range{0.001, 10.0});
     s.heading_sigma_max_rad = deg_key(c, "heading_sigma_max_deg", s.heading_sigma_max_rad, Range{0.001, 10.0});
     s.hold_s = c.get_double("hold_s", s.hold_s, Range{0.0, 600.0});
@@ -73,8 +80,12 @@ InFlightAligner::InFlightAligner(const InFlightAlignerSettings& s, double dt_s, 
     q_diag_.segment<3>(kBg).setConstant(s_.gyr_bias_walk_rps_s_rts * s_.gyr_bias_walk_rps_s_rts * dt_s_);
     q_diag_.segment<3>(kBa).setConstant(s_.acc_bias_walk_mps2_s_rts * s_.acc_bias_walk_mps2_s_rts * dt_s_);
     q_diag_.segment<6>(kEm).setConstant(s_.mag_walk_nT_rts * s_.mag_walk_nT_rts * dt_s_);
-    if (mode_ == HandOver::kNever)
+    if (mode_ == HandOver::kNever) {
         q_diag_.segment<3>(kW).setConstant(s_.wind_walk_mps_s_rts * s_.wind_walk_mps_s_rts * dt_s_);
+        // The turbulence's decay is applied in propagate(); this keeps its variance at turb_sigma_mps^2.
+        turb_decay_ = std::exp(-dt_s_ / s_.turb_tau_s);
+        q_diag_.segment<3>(kT).setConstant(s_.turb_sigma_mps * s_.turb_sigma_mps * (1.0 - turb_decay_ * turb_decay_));
+    }
 }
 
 void InFlightAligner::start(double t_s, const ImuSample& imu, const MagSample& mag, const GnssSample& fix,
@@ -121,7 +132,7 @@ void InFlightAligner::start_common(double t_s, const GnssSample& fix, const AirS
     p_.diagonal().segment<3>(kV).setConstant(s_.gnss_vel_sigma_mps * s_.gnss_vel_sigma_mps);
     p_.diagonal().segment<3>(kP) << s_.gnss_hor_sigma_m * s_.gnss_hor_sigma_m, s_.gnss_hor_sigma_m * s_.gnss_hor_sigma_m,
         s_.gnss_ver_sigma_m * s_.gnss_ver_sigma_m;
-    wind_n_ = Vec3::Zero();
+    wind_n_ = turb_n_ = b_air_ = Vec3::Zero();
     m_mag_.setZero();
     if (mode_ == HandOver::kNever) {
         for (int i = 0; i < 3; ++i)
@@ -132,6 +143,9 @@ void InFlightAligner::start_common(double t_s, const GnssSample& fix, const AirS
         if (air != nullptr)
             wind_n_ = v_n_ - q_nb_.toRotationMatrix() * math::vtas_body(air->tas_mps, air->aoa_rad, air->aos_rad);
         p_.diagonal().segment<3>(kW).setConstant(s_.wind_sigma_mps * s_.wind_sigma_mps);
+        p_.diagonal().segment<3>(kT).setConstant(s_.turb_sigma_mps * s_.turb_sigma_mps);
+        p_.diagonal().segment<3>(kAd) << s_.tas_offset_sigma_mps * s_.tas_offset_sigma_mps,
+            s_.aoa_offset_sigma_rad * s_.aoa_offset_sigma_rad, s_.aos_offset_sigma_rad * s_.aos_offset_sigma_rad;
     }
     steps_ = 0;
     started_ = true;
@@ -188,6 +202,11 @@ void InFlightAligner::propagate(const ImuSample& imu) {
     a.block<3, 3>(kV, kBa) = -r;
     a.block<3, 3>(kP, kV) = Mat3::Identity();
     const filters::SqMat<15> phi = filters::transition_matrix<15>(a, dt, 2);
+    if (mode_ == HandOver::kNever) {  // the turbulence's rows and columns of the transition: turb_decay_ I
+        p_.middleRows<3>(kT) *= turb_decay_;
+        p_.middleCols<3>(kT) *= turb_decay_;
+        turb_n_ *= turb_decay_;
+    }
     filters::propagate_covariance_leading_diag<kN, 15>(p_, phi, q_diag_);  // the wind: a walk, in q_diag_
     // Nominal state.
     const Vec3 w_nb = imu.w_b_rps - e_gyr_ - r.transpose() * (w_ie + w_en);
@@ -236,19 +255,26 @@ void InFlightAligner::update_fix(const GnssSample& fix) {
     if (info.ok) inject(dx);
 }
 
-// The air data's velocity error is not white: the turbulence, the air-data offsets and nav_air's smoothing make it
-// correlated from one update to the next. While GNSS pins the velocity, a tight sigma lets the wind triangle of the
-// turns sharpen the heading; after the loss the same sigma would let the turbulence drive the tilt (and, through the
-// magnetometer's dip coupling, the heading), so the denied phase weighs it less (docs/navigation.md, "Keeping the GNSS
-// calibration").
+// The turbulence and the air-data offsets, correlated from one update to the next, are states; what is left (the
+// sensors' noise through nav_air's smoothing, the gusts' departure from the model) has a sigma of its own before and
+// after the loss (docs/navigation.md, "Keeping the GNSS calibration").
 void InFlightAligner::update_air(const AirSample& air) {
     const double sigma = handed_over_ ? s_.air_vel_sigma_denied_mps : s_.air_vel_sigma_mps;
-    const Vec3 a_n = q_nb_.toRotationMatrix() * math::vtas_body(air.tas_mps, air.aoa_rad, air.aos_rad);
+    const Mat3 r_nb = q_nb_.toRotationMatrix();
+    const double tas = air.tas_mps - b_air_.x(), aoa = air.aoa_rad - b_air_.y(), aos = air.aos_rad - b_air_.z();
+    const Vec3 a_n = r_nb * math::vtas_body(tas, aoa, aos);
+    const double ca = std::cos(aoa), sa = std::sin(aoa), cb = std::cos(aos), sb = std::sin(aos);
+    Mat3 jac;  // d v_air_b / d(TAS, AOA, AOS), v_air_b = TAS (cos AOA cos AOS, sin AOS, sin AOA cos AOS)
+    jac << ca * cb, -tas * sa * cb, -tas * ca * sb,  //
+        sb, 0.0, tas * cb,                           //
+        sa * cb, tas * ca * cb, -tas * sa * sb;
     filters::Mat<3, kN> h = filters::Mat<3, kN>::Zero();
     h.block<3, 3>(0, kPhi) = math::skew(a_n);
     h.block<3, 3>(0, kV) = Mat3::Identity();
     h.block<3, 3>(0, kW) = -Mat3::Identity();
-    const filters::Vec<3> r = a_n + wind_n_ - v_n_;
+    h.block<3, 3>(0, kT) = -Mat3::Identity();
+    h.block<3, 3>(0, kAd) = r_nb * jac;
+    const filters::Vec<3> r = a_n + wind_n_ + turb_n_ - v_n_;
     filters::Vec<kN> dx = filters::Vec<kN>::Zero();
     const auto info = filters::joseph_update<kN, 3>(
         dx, p_, r, h, filters::SqMat<3>::Identity() * (sigma * sigma));
@@ -267,11 +293,14 @@ void InFlightAligner::inject(const filters::Vec<kN>& dx) {
     e_mag_ += dx.segment<3>(kEm);
     b_dev_ += dx.segment<3>(kBd);
     wind_n_ += dx.segment<3>(kW);
+    turb_n_ += dx.segment<3>(kT);
+    b_air_ += dx.segment<3>(kAd);
     for (int i = 0; i < 3; ++i) m_mag_.row(i) += dx.segment<3>(kM + 3 * i).transpose();
 }
 
 double InFlightAligner::tilt_sigma_rad() const { return std::sqrt(std::max(p_(kPhi, kPhi), p_(kPhi + 1, kPhi + 1))); }
 double InFlightAligner::heading_sigma_rad() const { return std::sqrt(p_(kPhi + 2, kPhi + 2)); }
+Vec3 InFlightAligner::air_offsets_sigma() const { return p_.diagonal().segment<3>(kAd).cwiseMax(0.0).cwiseSqrt(); }
 
 AttitudeEstimate InFlightAligner::estimate(std::uint64_t k, double t_s) const {
     AttitudeEstimate e;

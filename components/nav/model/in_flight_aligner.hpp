@@ -12,11 +12,13 @@
 // filter, the position filter takes the attitude as exact), so the heading and tilt information that the GNSS sees
 // in a turn cannot reach the attitude; here one covariance holds them all.
 //
-// Error state (33), true = estimate + error, the attitude error phi on the NED side (R = exp([phi x]) R_hat):
+// Error state (39), true = estimate + error, the attitude error phi on the NED side (R = exp([phi x]) R_hat):
 //   phi(0..2), dv_n(3..5), dp_NED [m](6..8), dE_gyr(9..11), dE_acc(12..14), dE_mag(15..17), dB_dev(18..20),
 //   and, used only when the estimator runs through the denied phase (HandOver::kNever): dw_n (21..23, the wind) and
 //   dM (24..32, row by row: the magnetometer's scale factor, cross coupling and soft iron, B~ = (I + M) b + E_mag,
-//   which turns with the aircraft and so is not a constant E_mag once it flies other headings than it was learnt on)
+//   which turns with the aircraft and so is not a constant E_mag once it flies other headings than it was learnt on),
+//   dt_n (33..35, the turbulence, NED, first-order Gauss-Markov) and db_air (36..38, the air data's offsets: TAS [m/s],
+//   AOA, AOS [rad], constant)
 // Mechanisation (NED, ellipsoidal Earth of nav_earth): w_nb = w~ - E_gyr - R^T (w_ie + w_en);
 //   v_dot = R (f~ - E_acc) + g_n - (2 w_ie + w_en) x v;  (lon, lat, h)_dot from v.
 // Error dynamics: phi_dot = -R dE_gyr;  dv_dot = -[f_n x] phi - R dE_acc;  dp_dot = dv;  errors of E_*, B_dev: walks.
@@ -24,9 +26,11 @@
 //   H = [(I + M) R^T [(B_model - B_dev) x], 0, 0, 0, 0, I, -(I + M) R^T, 0, I (x) b^T].
 // GNSS fix: position (NED metres from the estimate) and velocity, H = [0 0 I ...; 0 I 0 ...], no lever arm.
 // Air data (HandOver::kNever only, every air_period_steps, before and after the loss): the ground velocity is the air
-// velocity turned to NED plus the wind, v_n = R v_air_b + w_n; residual R_hat v_air_b + w_hat - v_hat,
-//   H = [[(R_hat v_air_b) x], I, 0, 0, 0, 0, 0, -I]; the wind walks (wind_walk_mps_s_rts: the turbulence and the
-// wind's changes). After the loss it is the velocity reference: it holds the tilt through gravity (the velocity's
+// velocity turned to NED plus the wind and the turbulence, v_n = R v_air_b(TAS - b_tas, AOA - b_aoa, AOS - b_aos) + w_n
+// + t_n; residual R_hat v_air_b + w_hat + t_hat - v_hat, H = [[(R_hat v_air_b) x], I, 0, 0, 0, 0, 0, -I, 0, -I, R_hat J]
+// (J = d v_air_b / d(TAS, AOA, AOS)); the wind walks (wind_walk_mps_s_rts: the wind's slow changes), the turbulence
+// decays with turb_tau_s to its stationary turb_sigma_mps (a correlated error the air data cannot average away, so
+// not a white measurement noise). After the loss it is the velocity reference: it holds the tilt through gravity (the velocity's
 // slope is phi x g + R dE_acc + the wind's acceleration) and with the magnetometer at the sensor's own noise keeps
 // the heading, gyro bias and field calibration the GNSS phase found (docs/navigation.md, "Keeping the GNSS
 // calibration").
@@ -69,6 +73,11 @@ struct InFlightAlignerSettings {
     double air_vel_sigma_mps{0.5};          // per axis, per air-data update, while GNSS is there
     double air_vel_sigma_denied_mps{3.0};   // the same after the loss (see in_flight_aligner.cpp, update_air)
     int air_period_steps{10};
+    double turb_sigma_mps{0.3};  // per NED axis, stationary (the Dryden gusts of the scenarios' turbulence factor)
+    double turb_tau_s{10.0};     // its correlation time
+    double tas_offset_sigma_mps{0.333};            // the air data's offsets at the start (the baseline
+    double aoa_offset_sigma_rad{math::deg2rad(0.333)};  // sensors' bias offsets, config/sensors)
+    double aos_offset_sigma_rad{math::deg2rad(0.333)};
     double mag_scale_sigma{7.5e-4};   // the diagonal of M at the start (the baseline magnetometer's scale factor)
     double mag_cross_sigma{9.16e-4};  // its other terms (the baseline's cross coupling)
     // Hand-over.
@@ -90,7 +99,7 @@ InFlightAlignerSettings parse_in_flight_alignment(const config::Config& c,
 
 class InFlightAligner {
 public:
-    static constexpr int kN = 33;
+    static constexpr int kN = 39;
     InFlightAligner() = default;
     InFlightAligner(const InFlightAlignerSettings& s, double dt_s, HandOver mode = HandOver::kAtAlignment);
 
@@ -133,6 +142,11 @@ public:
     // magnetometer and field errors (nav_types.hpp).
     [[nodiscard]] AttitudeHandover handover() const;
     [[nodiscard]] const Quat& q_nb() const { return q_nb_; }
+    // HandOver::kNever: the slowly varying wind (NED, without the turbulence) and the air-data offsets (TAS [m/s],
+    // AOA, AOS [rad]); zero in the other modes.
+    [[nodiscard]] const Vec3& wind_n_mps() const { return wind_n_; }
+    [[nodiscard]] const Vec3& air_offsets() const { return b_air_; }
+    [[nodiscard]] Vec3 air_offsets_sigma() const;
 
 private:
     void propagate(const ImuSample& imu);
@@ -159,6 +173,8 @@ private:
     Vec3 w_nb_b_{Vec3::Zero()};
     double lon_rad_{0.0}, lat_rad_{0.0}, h_m_{0.0};
     Vec3 e_gyr_{Vec3::Zero()}, e_acc_{Vec3::Zero()}, e_mag_{Vec3::Zero()}, b_dev_{Vec3::Zero()}, wind_n_{Vec3::Zero()};
+    Vec3 turb_n_{Vec3::Zero()}, b_air_{Vec3::Zero()};  // turbulence (NED) and air-data offsets (TAS, AOA, AOS)
+    double turb_decay_{1.0};                          // exp(-dt / turb_tau_s)
     Eigen::Matrix3d m_mag_{Eigen::Matrix3d::Zero()};
     filters::SqMat<kN> p_{filters::SqMat<kN>::Zero()};
 };

@@ -58,6 +58,7 @@ void PositionFilter::configure(const config::Config& tuning, const config::Confi
     t.horizontal = parse_horizontal_rule(variant);
     t.vertical = parse_vertical_rule(variant);
     t.frozen_wind_average_s = variant.get_double("frozen_wind_average_s", 0.0, Range{0.0, 1000.0});
+    t.wind_from_gnss_ins = variant.get_choice("wind_at_loss", "own", {"own", "gnss_ins"}) == "gnss_ins";
     tuning.finish();
     variant.finish();
     configure(t, stream);
@@ -271,8 +272,10 @@ void PositionFilter::enter_denied(double t_s) {
     ds_.lat_rad = x_(aided::kLat);
     ds_.h_m = x_(aided::kH);
     ds_.v_n_mps = x_.segment<3>(aided::kV);
-    ds_.wind_n_mps = wind_at_fix_;
+    ds_.wind_n_mps = tun_.wind_from_gnss_ins && gnss_ins_given_ ? gnss_ins_wind_n_mps_ : wind_at_fix_;
     ds_.dp_Pa = dp_at_fix_;
+    denied_air_offsets_.reset();
+    if (tun_.wind_from_gnss_ins && gnss_ins_given_) denied_air_offsets_ = gnss_ins_air_offsets_;
 }
 
 void PositionFilter::denied_step(const ImuSample& imu, bool imu_good, const AirDataEstimate& air,
@@ -292,6 +295,11 @@ void PositionFilter::denied_step(const ImuSample& imu, bool imu_good, const AirD
     in.w_nb_b_rps = att.w_nb_b_rps;
     in.f_b_mps2 = xd_.head<3>();
     in.air = air;
+    if (denied_air_offsets_) {
+        in.air.tas_mps -= denied_air_offsets_->x();
+        in.air.aoa_rad -= denied_air_offsets_->y();
+        in.air.aos_rad -= denied_air_offsets_->z();
+    }
     ds_ = denied::step(ds_, in, tun_.dt_s, tun_.horizontal, tun_.vertical);
 }
 

@@ -37,6 +37,7 @@
 //   vertical: pressure | integration | airspeed_integration.
 // Longitudes are output in (-pi, pi]; longitude innovations are wrapped.
 #include <cstdint>
+#include <optional>
 
 #include "config/config.hpp"
 #include "denied_rules.hpp"
@@ -71,6 +72,9 @@ public:
         // Variant `frozen_wind_average_s` (optional): > 0 freezes for the denied phase a low pass of the GNSS-based
         // wind with this time constant instead of the 3 s one (the mean wind rather than the current gust).
         double frozen_wind_average_s{0.0};
+        // Variant `wind_at_loss` (optional): own (the wind above) | gnss_ins (the joint GNSS/INS estimator's wind and
+        // air-data offsets, set_gnss_ins_calibration; docs/navigation.md, "Keeping the GNSS calibration").
+        bool wind_from_gnss_ins{false};
         // GNSS integrity (gnss_integrity section)
         double gate_chi2_6dof{40.0};
         int gate_max_consecutive_rejections{5};
@@ -114,6 +118,14 @@ public:
 
     PositionEstimate step(std::uint64_t k, double t_s, const ImuSample& imu, const GnssSample& gnss,
                           const AirDataEstimate& air, const AttitudeEstimate& att);
+
+    // With `wind_at_loss: gnss_ins`: the joint estimator's slow wind (NED) and air-data offsets (TAS [m/s], AOA, AOS
+    // [rad]); the last given before the GNSS loss are kept through the denied phase, the offsets taken off the air data.
+    void set_gnss_ins_calibration(const Vec3& wind_n_mps, const Vec3& air_offsets) {
+        gnss_ins_wind_n_mps_ = wind_n_mps;
+        gnss_ins_air_offsets_ = air_offsets;
+        gnss_ins_given_ = true;
+    }
 
     // The runtime declared the GNSS publisher dead: the next step runs GNSS-denied.
     void set_gnss_publisher_dead() { monitor_.set_publisher_dead(); }
@@ -159,6 +171,9 @@ private:
     double dp_lp_{0.0};
     Vec3 wind_at_fix_{Vec3::Zero()};
     double dp_at_fix_{0.0};
+    bool gnss_ins_given_{false};
+    Vec3 gnss_ins_wind_n_mps_{Vec3::Zero()}, gnss_ins_air_offsets_{Vec3::Zero()};
+    std::optional<Vec3> denied_air_offsets_;  // wind_at_loss: gnss_ins, from the loss on
     // denied phase
     filters::Vec<kNd> xd_ = filters::Vec<kNd>::Zero();
     filters::SqMat<kNd> pd_ = filters::SqMat<kNd>::Zero();

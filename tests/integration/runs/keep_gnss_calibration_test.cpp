@@ -120,3 +120,17 @@ TEST(KeepGnssCalibration, TheDeniedPhaseEstimatorWithoutTheAidedOneIsOneClearErr
     EXPECT_NE(r.output.find("needs aided_attitude: gnss_ins"), std::string::npos) << r.output;
     fs::remove_all(dir);
 }
+
+TEST(KeepGnssCalibration, TheEstimatorsWindWithoutTheDeniedPhaseEstimatorIsOneClearError) {
+    const fs::path dir = temp_dir("kgc-bad-wind");
+    const fs::path variant = dir / "wind_only.yaml";
+    gdnav::test::write_text(variant, "attitude: {specific_force: baseline}\n"
+                                     "position: {horizontal: frozen_wind, vertical: pressure, wind_at_loss: gnss_ins}\n");
+    const Result r = run({kExe, "run", "--scenario", "paper2", "--steps", "10", "--layout", "direct", "--variant",
+                          variant.string(), "--out", (dir / "out").string()},
+                         60.0);
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.output.find("position.wind_at_loss"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("needs denied_attitude: gnss_ins"), std::string::npos) << r.output;
+    fs::remove_all(dir);
+}

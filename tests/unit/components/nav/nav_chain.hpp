@@ -28,6 +28,7 @@ struct ChainOptions {
     YAML::Node position_override;  // merged into tuning.position (e.g. gnss_integrity)
     std::function<void(int, synth::Sample&)> edit;  // optional: alters the sample of step k before the filters see it
     std::function<void(int, const PositionFilter&)> inspect;  // optional: called after the position step of step k
+    std::function<void(int, PositionFilter&)> before_position;  // optional: called before the position step of step k
 };
 
 struct ChainRun {
@@ -87,6 +88,7 @@ inline ChainRun run_chain(const synth::Scenario& sc, const ChainOptions& o, std:
             const auto uk = static_cast<std::uint64_t>(k);
             run.air.push_back(air.step(uk, t, s.air, s.atm));
             run.att.push_back(att.step(uk, t, s.imu, s.mag, run.pos.back()));
+            if (o.before_position) o.before_position(k, pos);
             run.pos.push_back(pos.step(uk, t, s.imu, s.gnss, run.air.back(), run.att.back()));
         }
         if (o.inspect) o.inspect(k, pos);
