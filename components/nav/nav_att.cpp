@@ -4,7 +4,7 @@
 // yaw estimator (model/yaw_gsf.hpp).
 // When the estimator runs, nav_att is its only owner: it publishes gdnav/NavHandover every step, from which nav_pos
 // takes the aligned flag and, at the hand-over, the accelerometer errors (docs/navigation.md, "In-flight fine
-// alignment").
+// alignment"), and with `wind_at_loss: gnss_ins` the wind and air-data offsets of the GNSS loss.
 #include <algorithm>
 #include <memory>
 #include <optional>

@@ -1,7 +1,8 @@
 // nav_pos: the position filter (model/position_filter.hpp), GNSS-aided then GNSS-denied; optionally the alignment
 // monitor (model/alignment_monitor.hpp, `alignment_check`) and the in-flight alignment of nav_att
 // (`follow_in_flight_alignment: true`: the aligned flag and, at its hand-over, its accelerometer errors, from
-// gdnav/NavHandover), both published on gdnav/NavAlignment.
+// gdnav/NavHandover), both published on gdnav/NavAlignment; with the variant's `wind_at_loss: gnss_ins` the wind and
+// air-data offsets of the joint estimator (gdnav/NavHandover) for the denied phase.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
