@@ -77,27 +77,19 @@ MissionBuilder::MissionBuilder(std::string name, double t_end_s, const gnc::Chan
 }
 
 MissionBuilder& MissionBuilder::set_throttle(gnc::ThrottleMode mode, double target) {
-    current_.throttle_mode = mode;
-    current_.throttle_target = target;
-    return *this;
+    return set_channel(&gnc::ChannelTargets::throttle_mode, &gnc::ChannelTargets::throttle_target, mode, target);
 }
 
 MissionBuilder& MissionBuilder::set_elevator(gnc::ElevatorMode mode, double target) {
-    current_.elevator_mode = mode;
-    current_.elevator_target = target;
-    return *this;
+    return set_channel(&gnc::ChannelTargets::elevator_mode, &gnc::ChannelTargets::elevator_target, mode, target);
 }
 
 MissionBuilder& MissionBuilder::set_aileron(gnc::AileronMode mode, double target) {
-    current_.aileron_mode = mode;
-    current_.aileron_target = target;
-    return *this;
+    return set_channel(&gnc::ChannelTargets::aileron_mode, &gnc::ChannelTargets::aileron_target, mode, target);
 }
 
 MissionBuilder& MissionBuilder::set_rudder(gnc::RudderMode mode, double target) {
-    current_.rudder_mode = mode;
-    current_.rudder_target = target;
-    return *this;
+    return set_channel(&gnc::ChannelTargets::rudder_mode, &gnc::ChannelTargets::rudder_target, mode, target);
 }
 
 MissionBuilder& MissionBuilder::hold(const Trigger& until) {

@@ -119,6 +119,15 @@ public:
     [[nodiscard]] Mission build() const;
 
 private:
+    // Sets one channel of the current settings: the mode and the target of the fields named.
+    template <class Mode>
+    MissionBuilder& set_channel(Mode gnc::ChannelTargets::*mode_field, double gnc::ChannelTargets::*target_field,
+                                Mode mode, double target) {
+        current_.*mode_field = mode;
+        current_.*target_field = target;
+        return *this;
+    }
+
     Mission mission_;
     gnc::ChannelTargets current_;
 };
