@@ -23,12 +23,7 @@ std::string format_double17(double v) {
 
 RunRecord make_run_record(const RunMetrics& m, bool complete, std::uint64_t seed, std::uint64_t run_index,
                           std::uint64_t steps) {
-    RunRecord r;
-    r.complete = complete;
-    r.seed = seed;
-    r.run_index = run_index;
-    r.steps = steps;
-    r.t_gnss_s = m.t_gnss_s();
+    RunRecord r{.complete = complete, .seed = seed, .run_index = run_index, .steps = steps, .t_gnss_s = m.t_gnss_s()};
     r.t_end_s = m.t_last_s();
     r.samples = m.stats(Signal::yaw).count();
     r.distance_m = m.distance_since_gnss_m();
@@ -52,13 +47,8 @@ RunRecord make_run_record(const RunMetrics& m, bool complete, std::uint64_t seed
 RunRecord make_unreferenced_record(bool complete, std::uint64_t seed, std::uint64_t run_index, std::uint64_t steps,
                                    double t_gnss_s) {
     constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-    RunRecord r;
-    r.has_reference = false;
-    r.complete = complete;
-    r.seed = seed;
-    r.run_index = run_index;
-    r.steps = steps;
-    r.t_gnss_s = t_gnss_s;
+    RunRecord r{.complete = complete, .seed = seed, .run_index = run_index, .steps = steps, .t_gnss_s = t_gnss_s,
+                .has_reference = false};
     r.t_end_s = r.distance_m = r.distance_t_end_m = r.hor_pct = r.cross_pct = r.along_pct = kNaN;
     r.att_trend_from_s = r.att_slope_rad_per_s = r.hor_slope_mps = r.hor_r2 = kNaN;
     r.signals.fill({kNaN, kNaN, kNaN, kNaN});
