@@ -32,15 +32,9 @@ void FlightPhysics::evaluate(const PhysicsState& x, double t, const Vec3& turb_b
 
 void FlightPhysics::initialize_trimmed(double lat_rad, double lon_rad, double Hp_m, double tas_mps, double bearing_rad,
                                        double mass_kg, double t0_s) {
-    TrimRequest req;
-    req.lat_rad = lat_rad;
-    req.lon_rad = lon_rad;
-    req.Hp_m = Hp_m;
-    req.tas_mps = tas_mps;
-    req.bearing_rad = bearing_rad;
-    req.mass_kg = mass_kg;
-    req.wind_n_mps = wind_.wind_n_mps(t0_s);
-    req.offsets = offsets_.at(t0_s);
+    const TrimRequest req{.lat_rad = lat_rad, .lon_rad = lon_rad, .Hp_m = Hp_m, .tas_mps = tas_mps,
+                          .bearing_rad = bearing_rad, .mass_kg = mass_kg, .wind_n_mps = wind_.wind_n_mps(t0_s),
+                          .offsets = offsets_.at(t0_s)};
     trim_ = trim_level_flight(dyn_, req);
 
     PhysicsState x = trim_.state;
