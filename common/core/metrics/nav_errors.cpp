@@ -32,12 +32,7 @@ NavErrors nav_errors(const NavState& est, const NavState& truth, const earth::Ra
     e.dT_K = est.dT_K - truth.dT_K;
     e.h_m = est.h_m - truth.h_m;
     e.v_n_mps = est.v_n_mps - truth.v_n_mps;
-    const HorizontalError h = horizontal_error(est.lat_rad, est.lon_rad, truth, radii0);
-    e.north_m = h.north_m;
-    e.east_m = h.east_m;
-    e.hor_m = h.hor_m;
-    e.cross_m = h.cross_m;
-    e.along_m = h.along_m;
+    static_cast<HorizontalError&>(e) = horizontal_error(est.lat_rad, est.lon_rad, truth, radii0);
     return e;
 }
 

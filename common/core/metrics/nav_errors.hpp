@@ -34,7 +34,16 @@ struct NavState {
     double dT_K{0.0};
 };
 
-struct NavErrors {
+struct HorizontalError {
+    double north_m{0.0};
+    double east_m{0.0};
+    double hor_m{0.0};
+    double cross_m{0.0};
+    double along_m{0.0};
+};
+
+// The step's errors: the horizontal ones (the base) and all the others.
+struct NavErrors : HorizontalError {
     double yaw_rad{0.0};
     double pitch_rad{0.0};
     double bank_rad{0.0};
@@ -45,19 +54,6 @@ struct NavErrors {
     double dT_K{0.0};
     double h_m{0.0};
     math::Vec3 v_n_mps{math::Vec3::Zero()};
-    double north_m{0.0};
-    double east_m{0.0};
-    double hor_m{0.0};
-    double cross_m{0.0};
-    double along_m{0.0};
-};
-
-struct HorizontalError {
-    double north_m{0.0};
-    double east_m{0.0};
-    double hor_m{0.0};
-    double cross_m{0.0};
-    double along_m{0.0};
 };
 
 // Horizontal error decomposition (see above). `radii0` are the radii at the initial latitude.
