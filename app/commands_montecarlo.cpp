@@ -18,21 +18,11 @@ namespace fs = std::filesystem;
 using namespace gdnav::runtime;
 
 BatchSpec batch_spec(const McArgs& a, const CliContext& ctx) {
-    const ScenarioDocument s = load_scenario_document(a.scenario, a.o);
-    BatchSpec b;
-    b.scenario = a.scenario;
+    const ScenarioDocument s = load_scenario_document(a.batch.scenario, a.o);
+    BatchSpec b = a.batch;
     b.file = s.file;
     b.doc = s.doc;
     add_member_options(b.doc, a.members);
-    b.seed = a.seed;
-    b.seed_given = a.seed_given;
-    b.steps = a.steps;
-    b.first = a.first;
-    b.runs = a.runs;
-    b.jobs = a.jobs;
-    b.layout = a.layout;
-    b.domain = a.domain;
-    b.out = a.out;
     b.log_level = ctx.log_level;
     return b;
 }
@@ -61,7 +51,7 @@ int run_montecarlo(const McArgs& a, const CliContext& ctx) {
     } else if (!a.no_report) {
         ReportOptions ro;
         ro.figures = !a.no_figures;
-        const int rc = write_batch_report({fs::absolute(a.out)}, ro);
+        const int rc = write_batch_report({fs::absolute(a.batch.out)}, ro);
         if (rc != 0) code = code ? code : rc;
     }
     return code;
@@ -72,18 +62,19 @@ CLI::App* add_montecarlo_command(CLI::App& app, CliContext& ctx, CommandRunner& 
     auto* sub = app.add_subcommand("montecarlo", "run a Monte Carlo batch (parallel, resumable) and aggregate it");
     sub->add_option("--shard", a->shard, "run only shard I of N (I/N, 1-based: runs first+k with k mod N = I-1)");
     sub->add_flag("--mpi", a->mpi, "under mpirun: the ranks share the runs, rank 0 writes the report");
-    sub->add_option("--scenario", a->scenario, "1, 2 (paper scenarios), a scenario name or a YAML file");
-    sub->add_option("--runs", a->runs, "number of runs")->check(CLI::Range(1, 1000000));
-    sub->add_option("--first", a->first, "index of the first run");
-    sub->add_option("--seed", a->seed, "master seed (default: the scenario file's)");
-    sub->add_option("--jobs,-j", a->jobs, "runs in parallel")->check(CLI::Range(1, 256));
-    sub->add_option("--layout", a->layout, "direct | composed | distributed")
+    sub->add_option("--scenario", a->batch.scenario, "1, 2 (paper scenarios), a scenario name or a YAML file");
+    sub->add_option("--runs", a->batch.runs, "number of runs")->check(CLI::Range(1, 1000000));
+    sub->add_option("--first", a->batch.first, "index of the first run");
+    sub->add_option("--seed", a->batch.seed, "master seed (default: the scenario file's)");
+    sub->add_option("--jobs,-j", a->batch.jobs, "runs in parallel")->check(CLI::Range(1, 256));
+    sub->add_option("--layout", a->batch.layout, "direct | composed | distributed")
         ->check(CLI::IsMember({"direct", "composed", "distributed"}));
-    sub->add_option("--out", a->out, "batch directory")->required();
-    sub->add_option("--domain", a->domain, "DDS domain of the first parallel slot: slot k of --jobs uses D+k "
-                                           "(default: each run takes one no other run of this host uses)")
+    sub->add_option("--out", a->batch.out, "batch directory")->required();
+    sub->add_option("--domain", a->batch.domain,
+                    "DDS domain of the first parallel slot: slot k of --jobs uses D+k (default: each run takes one "
+                    "no other run of this host uses)")
         ->check(CLI::Range(0, 232));
-    sub->add_option("--steps", a->steps, "override the number of steps of every run");
+    sub->add_option("--steps", a->batch.steps, "override the number of steps of every run");
     sub->add_option("--set", a->o.sets, "override a key: path.to.key=value (YAML value; ~ removes)");
     sub->add_option("--grade", a->o.grades, "sensor grade for every group (NAME) or one group (GROUP=NAME)");
     sub->add_option("--variant", a->o.variants, "navigation variant NAME (nav_att, nav_pos) or COMPONENT=NAME");
@@ -94,7 +85,7 @@ CLI::App* add_montecarlo_command(CLI::App& app, CliContext& ctx, CommandRunner& 
     sub->add_flag("--no-figures", a->no_figures, "aggregate tables only");
     run = [a, sub, &ctx]() {
         setup_logging("gdnav", ctx.log_level);
-        a->seed_given = sub->count("--seed") > 0;
+        a->batch.seed_given = sub->count("--seed") > 0;
         return run_montecarlo(*a, ctx);
     };
     return sub;

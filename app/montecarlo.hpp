@@ -13,16 +13,9 @@
 namespace gdnav::app {
 
 struct McArgs {
-    std::string scenario{"1"};
-    std::uint64_t runs{1};
-    std::uint64_t first{0};
-    std::uint64_t seed{1};
-    bool seed_given{false};  // --seed given (else the scenario file's seed, or 1)
-    unsigned jobs{2};
-    std::string layout{"direct"};
-    int domain{-1};  // --domain (first DDS domain of the slots), -1: not given
-    std::string out;
-    std::uint64_t steps{0};
+    // The options that are the batch's as they are (scenario, runs, first, seed, seed_given, jobs, layout, domain,
+    // out, steps); batch_spec() adds the scenario document and the log level.
+    BatchSpec batch{.scenario = "1"};
     scenario::Overrides o;
     std::vector<std::string> members;  // --member NAME=SPEC (run.members of every run)
     bool no_report{false};

@@ -85,10 +85,10 @@ int run_montecarlo_mpi(const McArgs& a, const CliContext& ctx) {
     const Shard shard{static_cast<std::uint64_t>(rank) + 1, static_cast<std::uint64_t>(size)};
     int code = 0;
     std::string packed;
-    const fs::path dir = fs::absolute(a.out);
+    const fs::path dir = fs::absolute(a.batch.out);
     try {
         code = run_batch_shard(a, ctx, shard);
-        packed = pack_metrics(dir, shard_runs(a.first, a.runs, shard));
+        packed = pack_metrics(dir, shard_runs(a.batch.first, a.batch.runs, shard));
     } catch (const config::ConfigError& e) {
         spdlog::error("rank {}: {}", rank, e.what());
         code = runtime::kExitConfig;

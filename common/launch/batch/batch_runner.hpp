@@ -18,8 +18,8 @@ namespace gdnav::app {
 
 struct BatchSpec {
     std::string scenario;         // as given on the command line (recorded in batch.yaml)
-    std::filesystem::path file;   // the scenario file
-    YAML::Node doc;               // its document with the command-line overrides applied
+    std::filesystem::path file{};  // the scenario file
+    YAML::Node doc{};             // its document with the command-line overrides applied
     std::uint64_t seed{1};
     bool seed_given{false};       // seed replaces the document's run.seed (else used only when the file has none)
     std::uint64_t steps{0};       // > 0: every run's number of steps (replaces run.duration_s)
@@ -29,7 +29,7 @@ struct BatchSpec {
     std::string layout{"direct"};
     int domain{-1};               // >= 0 (--domain): slot k of `jobs` runs on DDS domain domain + k; else each run
                                   // takes a domain no other run of this host uses, or the document's run.domain_id
-    std::filesystem::path out;    // the batch directory
+    std::filesystem::path out{};  // the batch directory
     std::string log_level{"info"};
 };
 
