@@ -29,18 +29,16 @@ Alignment Generator::alignment(rnd::Stream stream, bool exact) const {
     const Quat q = math::quat_from_euler({sc_.yaw0_rad, sc_.pitch_rad, sc_.bank_rad});
     const sensors::ImuAlignment i = sensors::align_imu(e, q, sc_.gyr_err_b_rps, sc_.acc_err_b_mps2, stream);
     const sensors::MagAlignment m = sensors::align_mag(e, sc_.mag_err_b_nT, sc_.b_dev_n_nT, stream);
-    Alignment a;
-    a.q_nb = i.q_nb;
-    a.att_sigma_rad = i.att_sigma_rad;
-    a.gyr_err_rps = i.gyr_err_rps;
-    a.gyr_err_sigma_rps = i.gyr_err_sigma_rps;
-    a.acc_err_mps2 = i.acc_err_mps2;
-    a.acc_err_sigma_mps2 = i.acc_err_sigma_mps2;
-    a.mag_err_nT = m.mag_err_nT;
-    a.mag_err_sigma_nT = m.mag_err_sigma_nT;
-    a.b_dev_n_nT = m.b_dev_n_nT;
-    a.b_dev_sigma_nT = m.b_dev_sigma_nT;
-    return a;
+    return {.q_nb = i.q_nb,
+            .att_sigma_rad = i.att_sigma_rad,
+            .gyr_err_rps = i.gyr_err_rps,
+            .gyr_err_sigma_rps = i.gyr_err_sigma_rps,
+            .acc_err_mps2 = i.acc_err_mps2,
+            .acc_err_sigma_mps2 = i.acc_err_sigma_mps2,
+            .mag_err_nT = m.mag_err_nT,
+            .mag_err_sigma_nT = m.mag_err_sigma_nT,
+            .b_dev_n_nT = m.b_dev_n_nT,
+            .b_dev_sigma_nT = m.b_dev_sigma_nT};
 }
 
 Sample Generator::next() {
