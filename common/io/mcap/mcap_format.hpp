@@ -7,6 +7,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace gdnav::mcap {
@@ -36,6 +37,14 @@ inline constexpr std::size_t kFooterContent = 20;  // summary_start, summary_off
 
 using StringMap = std::map<std::string, std::string>;
 
+// A record's fields are written and read in order, each in the wire form of its C++ type, so a record's layout is
+// the types of its fields: uint8/16/32/64 as such, std::string as String, StringMap as Map. Any other type (an int,
+// a uint16 meant as uint32 on the wire) does not compile: say the wire type with a cast.
+template <class T>
+inline constexpr bool kWireType = std::is_same_v<T, std::uint8_t> || std::is_same_v<T, std::uint16_t> ||
+                                  std::is_same_v<T, std::uint32_t> || std::is_same_v<T, std::uint64_t> ||
+                                  std::is_same_v<T, std::string> || std::is_same_v<T, StringMap>;
+
 // Appends little-endian fields to a byte buffer.
 class ByteWriter {
 public:
@@ -58,6 +67,14 @@ public:
             str(v);
         }
     }
+    // A map<uint16 channel id, uint64> field (Statistics.channel_message_counts, ChunkIndex.message_index_offsets).
+    void channel_map(const std::map<std::uint16_t, std::uint64_t>& m) {
+        u32(static_cast<std::uint32_t>(m.size() * 10));
+        for (const auto& [ch, v] : m) {
+            u16(ch);
+            u64(v);
+        }
+    }
     // Starts a record; returns the position of its length field, which end_record() fills in.
     std::size_t begin_record(Op op) {
         u8(static_cast<std::uint8_t>(op));
@@ -70,8 +87,23 @@ public:
         for (int i = 0; i < 8; ++i) out_[length_at + i] = static_cast<std::uint8_t>(n >> (8 * i));
     }
     [[nodiscard]] std::size_t size() const { return out_.size(); }
+    // The fields in order, each in its type's wire form (kWireType).
+    template <class... T>
+    void fields(const T&... v) {
+        (put(v), ...);
+    }
 
 private:
+    template <class T>
+    void put(const T& v) {
+        static_assert(kWireType<T>, "not a wire type");
+        if constexpr (std::is_same_v<T, std::uint8_t>) u8(v);
+        else if constexpr (std::is_same_v<T, std::uint16_t>) u16(v);
+        else if constexpr (std::is_same_v<T, std::uint32_t>) u32(v);
+        else if constexpr (std::is_same_v<T, std::uint64_t>) u64(v);
+        else if constexpr (std::is_same_v<T, std::string>) str(v);
+        else map(v);
+    }
     void le(std::uint64_t v, int n) {
         for (int i = 0; i < n; ++i) out_.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
     }
@@ -109,8 +141,23 @@ public:
     }
     [[nodiscard]] std::size_t left() const { return n_ - pos_; }
     [[nodiscard]] std::size_t pos() const { return pos_; }
+    // Reads the fields in order, each in its type's wire form (kWireType).
+    template <class... T>
+    void fields(T&... v) {
+        (get(v), ...);
+    }
 
 private:
+    template <class T>
+    void get(T& v) {
+        static_assert(kWireType<T>, "not a wire type");
+        if constexpr (std::is_same_v<T, std::uint8_t>) v = u8();
+        else if constexpr (std::is_same_v<T, std::uint16_t>) v = u16();
+        else if constexpr (std::is_same_v<T, std::uint32_t>) v = u32();
+        else if constexpr (std::is_same_v<T, std::uint64_t>) v = u64();
+        else if constexpr (std::is_same_v<T, std::string>) v = str();
+        else v = map();
+    }
     void need(std::uint64_t n) const {
         if (n > n_ - pos_) throw std::out_of_range("field runs past the end of its record");
     }

@@ -105,8 +105,7 @@ private:
             throw std::runtime_error("not an MCAP file (no Header record after the magic)");
         const auto [op, content, n] = record_at(8, "header");
         ByteReader in(content, n);
-        r_.profile = in.str();
-        r_.library = in.str();
+        in.fields(r_.profile, r_.library);
         return kRecordPrefix + n;
     }
 
@@ -136,8 +135,7 @@ private:
             case Op::Chunk: chunk(in, pos); break;
             case Op::Metadata: {
                 Metadata m;
-                m.name = in.str();
-                m.entries = in.map();
+                in.fields(m.name, m.entries);
                 r_.metadata.push_back(std::move(m));
                 break;
             }
@@ -150,29 +148,19 @@ private:
 
     void schema(ByteReader& in) {
         Schema s;
-        s.id = in.u16();
-        s.name = in.str();
-        s.encoding = in.str();
-        s.data = in.str();
+        in.fields(s.id, s.name, s.encoding, s.data);
         r_.schemas[s.id] = std::move(s);
     }
 
     void channel(ByteReader& in) {
         Channel c;
-        c.id = in.u16();
-        c.schema_id = in.u16();
-        c.topic = in.str();
-        c.message_encoding = in.str();
-        c.metadata = in.map();
+        in.fields(c.id, c.schema_id, c.topic, c.message_encoding, c.metadata);
         r_.channels[c.id] = std::move(c);
     }
 
     void message(ByteReader& in, std::uint64_t pos) {
         MessageView m;
-        m.channel_id = in.u16();
-        m.sequence = in.u32();
-        m.log_time = in.u64();
-        m.publish_time = in.u64();
+        in.fields(m.channel_id, m.sequence, m.log_time, m.publish_time);
         m.size = in.left();
         m.data = in.bytes(m.size);
         const auto c = r_.channels.find(m.channel_id);
@@ -187,10 +175,7 @@ private:
 
     void attachment(ByteReader& in, std::uint64_t pos) {
         Attachment a;
-        a.log_time = in.u64();
-        a.create_time = in.u64();
-        a.name = in.str();
-        a.media_type = in.str();
+        in.fields(a.log_time, a.create_time, a.name, a.media_type);
         const std::uint64_t n = in.u64();
         const std::uint8_t* d = in.bytes(n);
         a.data.assign(reinterpret_cast<const char*>(d), n);
@@ -277,29 +262,17 @@ private:
 
     void statistics(ByteReader& in) {
         Statistics s;
-        s.message_count = in.u64();
-        s.schema_count = in.u16();
-        s.channel_count = in.u32();
-        s.attachment_count = in.u32();
-        s.metadata_count = in.u32();
-        s.chunk_count = in.u32();
-        s.message_start_time = in.u64();
-        s.message_end_time = in.u64();
+        in.fields(s.message_count, s.schema_count, s.channel_count, s.attachment_count, s.metadata_count,
+                  s.chunk_count, s.message_start_time, s.message_end_time);
         read_channel_map(in, s.channel_message_counts);
         r_.statistics = s;
     }
 
     void chunk_index(ByteReader& in) {
         ChunkIndex c;
-        c.message_start_time = in.u64();
-        c.message_end_time = in.u64();
-        c.chunk_start_offset = in.u64();
-        c.chunk_length = in.u64();
+        in.fields(c.message_start_time, c.message_end_time, c.chunk_start_offset, c.chunk_length);
         read_channel_map(in, c.message_index_offsets);
-        c.message_index_length = in.u64();
-        c.compression = in.str();
-        c.compressed_size = in.u64();
-        c.uncompressed_size = in.u64();
+        in.fields(c.message_index_length, c.compression, c.compressed_size, c.uncompressed_size);
         r_.chunk_indexes.push_back(std::move(c));
     }
 

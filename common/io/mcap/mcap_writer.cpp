@@ -20,8 +20,7 @@ Writer::Writer(const std::filesystem::path& file, WriterOptions options) : path_
     std::vector<std::uint8_t> b(kMagic, kMagic + 8);
     ByteWriter w(b);
     const std::size_t at = w.begin_record(Op::Header);
-    w.str(opt_.profile);
-    w.str(opt_.library);
+    w.fields(opt_.profile, opt_.library);
     w.end_record(at);
     emit(b, true);
 }
@@ -46,10 +45,7 @@ std::uint16_t Writer::add_schema(const std::string& name, const std::string& enc
     scratch_.clear();
     ByteWriter w(scratch_);
     const std::size_t at = w.begin_record(Op::Schema);
-    w.u16(id);
-    w.str(name);
-    w.str(encoding);
-    w.str(data);  // uint32 length + bytes
+    w.fields(id, name, encoding, data);
     w.end_record(at);
     emit(scratch_, true);
     schema_records_.insert(schema_records_.end(), scratch_.begin(), scratch_.end());
@@ -62,11 +58,7 @@ std::uint16_t Writer::add_channel(std::uint16_t schema_id, const std::string& to
     scratch_.clear();
     ByteWriter w(scratch_);
     const std::size_t at = w.begin_record(Op::Channel);
-    w.u16(id);
-    w.u16(schema_id);
-    w.str(topic);
-    w.str(message_encoding);
-    w.map(metadata);
+    w.fields(id, schema_id, topic, message_encoding, metadata);
     w.end_record(at);
     emit(scratch_, true);
     channel_records_.insert(channel_records_.end(), scratch_.begin(), scratch_.end());
@@ -83,10 +75,7 @@ void Writer::write_message(std::uint16_t channel_id, std::uint32_t sequence, std
     chunk_index_[channel_id].emplace_back(log_time, chunk_.size());
     ByteWriter w(chunk_);
     const std::size_t at = w.begin_record(Op::Message);
-    w.u16(channel_id);
-    w.u32(sequence);
-    w.u64(log_time);
-    w.u64(publish_time);
+    w.fields(channel_id, sequence, log_time, publish_time);
     w.bytes(data, size);
     w.end_record(at);
     if (message_count_ == 0) start_time_ = end_time_ = log_time;
@@ -153,8 +142,7 @@ void Writer::write_metadata(const std::string& name, const StringMap& metadata) 
     scratch_.clear();
     ByteWriter w(scratch_);
     const std::size_t at = w.begin_record(Op::Metadata);
-    w.str(name);
-    w.map(metadata);
+    w.fields(name, metadata);
     w.end_record(at);
     metadata_.push_back({offset_, scratch_.size(), name});
     emit(scratch_, true);
@@ -165,11 +153,7 @@ void Writer::write_attachment(const std::string& name, const std::string& media_
     scratch_.clear();
     ByteWriter w(scratch_);
     const std::size_t at = w.begin_record(Op::Attachment);
-    w.u64(log_time);
-    w.u64(create_time);
-    w.str(name);
-    w.str(media_type);
-    w.u64(data.size());
+    w.fields(log_time, create_time, name, media_type, data.size());
     w.bytes(reinterpret_cast<const std::uint8_t*>(data.data()), data.size());
     // CRC-32 of the preceding fields of the record's content
     w.u32(crc32_update(0, scratch_.data() + kRecordPrefix, scratch_.size() - kRecordPrefix));
@@ -181,19 +165,10 @@ void Writer::write_attachment(const std::string& name, const std::string& media_
 void Writer::write_statistics(std::vector<std::uint8_t>& s) const {
     ByteWriter w(s);
     const std::size_t at = w.begin_record(Op::Statistics);
-    w.u64(message_count_);
-    w.u16(schemas_);
-    w.u32(channels_);
-    w.u32(static_cast<std::uint32_t>(attachments_.size()));
-    w.u32(static_cast<std::uint32_t>(metadata_.size()));
-    w.u32(static_cast<std::uint32_t>(chunks_.size()));
-    w.u64(start_time_);
-    w.u64(end_time_);
-    w.u32(static_cast<std::uint32_t>(channel_counts_.size() * 10));
-    for (const auto& [ch, n] : channel_counts_) {
-        w.u16(ch);
-        w.u64(n);
-    }
+    w.fields(message_count_, schemas_, std::uint32_t{channels_}, static_cast<std::uint32_t>(attachments_.size()),
+             static_cast<std::uint32_t>(metadata_.size()), static_cast<std::uint32_t>(chunks_.size()), start_time_,
+             end_time_);
+    w.channel_map(channel_counts_);
     w.end_record(at);
 }
 
@@ -201,19 +176,9 @@ void Writer::write_chunk_indexes(std::vector<std::uint8_t>& s) const {
     ByteWriter w(s);
     for (const auto& c : chunks_) {
         const std::size_t at = w.begin_record(Op::ChunkIndex);
-        w.u64(c.start_time);
-        w.u64(c.end_time);
-        w.u64(c.offset);
-        w.u64(c.length);
-        w.u32(static_cast<std::uint32_t>(c.message_index_offsets.size() * 10));
-        for (const auto& [ch, off] : c.message_index_offsets) {
-            w.u16(ch);
-            w.u64(off);
-        }
-        w.u64(c.message_index_length);
-        w.str(opt_.compression);
-        w.u64(c.compressed_size);
-        w.u64(c.uncompressed_size);
+        w.fields(c.start_time, c.end_time, c.offset, c.length);
+        w.channel_map(c.message_index_offsets);
+        w.fields(c.message_index_length, opt_.compression, c.compressed_size, c.uncompressed_size);
         w.end_record(at);
     }
 }
@@ -222,13 +187,7 @@ void Writer::write_attachment_indexes(std::vector<std::uint8_t>& s) const {
     ByteWriter w(s);
     for (const auto& a : attachments_) {
         const std::size_t at = w.begin_record(Op::AttachmentIndex);
-        w.u64(a.offset);
-        w.u64(a.length);
-        w.u64(a.log_time);
-        w.u64(a.create_time);
-        w.u64(a.data_size);
-        w.str(a.name);
-        w.str(a.media_type);
+        w.fields(a.offset, a.length, a.log_time, a.create_time, a.data_size, a.name, a.media_type);
         w.end_record(at);
     }
 }
@@ -237,9 +196,7 @@ void Writer::write_metadata_indexes(std::vector<std::uint8_t>& s) const {
     ByteWriter w(s);
     for (const auto& m : metadata_) {
         const std::size_t at = w.begin_record(Op::MetadataIndex);
-        w.u64(m.offset);
-        w.u64(m.length);
-        w.str(m.name);
+        w.fields(m.offset, m.length, m.name);
         w.end_record(at);
     }
 }
