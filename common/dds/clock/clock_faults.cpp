@@ -20,11 +20,7 @@ using namespace eprosima::fastdds::dds;
 void Clock::Impl::read_fault_requests(double now) {
     SampleInfo info;
     while (fault_reader->take_next_sample(&fault_in, &info) == ReturnCode_t::RETCODE_OK) {
-        if (!info.valid_data || fault_in.run_id() != rc.info.run_index) continue;
-        if (fault_in.run_token() != token) {
-            foreign.note(fault_in.run_token(), "a fault sender", "FaultRequest");
-            continue;
-        }
+        if (!this_run(info, fault_in, "a fault sender", "FaultRequest")) continue;
         const std::string id = std::to_string(fault_in.request_id());
         const std::string text = fault_in.fault().to_string();
         std::string error;

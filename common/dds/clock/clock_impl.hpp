@@ -137,6 +137,19 @@ struct Clock::Impl {
 
     void read_done(double now);
 
+    // Whether a taken control sample (StepDone, FaultRequest) is this run's: valid, of this run's index and token. A
+    // sample of another token is noted as a foreign run's (`source` on `topic`).
+    template <class Sample>
+    bool this_run(const eprosima::fastdds::dds::SampleInfo& info, const Sample& s, const char* source,
+                  const char* topic) {
+        if (!info.valid_data || s.run_id() != rc.info.run_index) return false;
+        if (s.run_token() != token) {
+            foreign.note(s.run_token(), source, topic);
+            return false;
+        }
+        return true;
+    }
+
     bool aborted{false};
     std::string abort_reason;
 

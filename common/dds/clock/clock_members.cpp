@@ -117,11 +117,7 @@ bool Clock::Impl::ours(const msg::ComponentStatus& s, double now) {
 void Clock::Impl::read_done(double now) {
     SampleInfo info;
     while (done_reader->take_next_sample(&done_in, &info) == ReturnCode_t::RETCODE_OK) {
-        if (!info.valid_data || done_in.run_id() != rc.info.run_index) continue;
-        if (done_in.run_token() != token) {
-            foreign.note(done_in.run_token(), "a StepDone writer", "StepDone");
-            continue;
-        }
+        if (!this_run(info, done_in, "a StepDone writer", "StepDone")) continue;
         if (done_in.member_index() >= table.size()) continue;
         Member& m = *table[done_in.member_index()];
         m.last_seen_s = now;
