@@ -122,15 +122,12 @@ PaperDraws draw_paper_scenario(int scenario, std::uint64_t seed, std::uint64_t r
     rnd::Stream ws = rnd::Stream::derive(seed, run_index, "scenario/wind");
     rnd::Stream os = rnd::Stream::derive(seed, run_index, "scenario/offsets");
     rnd::Stream es = rnd::Stream::derive(seed, run_index, "scenario/earth");
-    if (scenario == 1) {
+    if (scenario == 1)
         d.mission.common = guidance::draw_scenario1(ms, d.t_gnss_s);
-        d.wind = physics::draw_wind_scenario1(ws);
-        d.offsets = atm::draw_offsets_scenario1(os);
-    } else {
+    else
         d.mission = guidance::draw_scenario2(ms, d.t_gnss_s);
-        d.wind = physics::draw_wind_scenario2(ws);
-        d.offsets = atm::draw_offsets_scenario2(os);
-    }
+    d.wind = physics::draw_wind_scenario(ws, scenario == 1);
+    d.offsets = atm::draw_offsets_scenario(os, scenario == 1);
     d.earth = earth::draw_earth_truth(es);
     if (options) {
         if (auto f = options->optional_child("fixed")) apply_fixed(*f, scenario, d.mission);

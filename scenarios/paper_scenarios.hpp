@@ -7,8 +7,8 @@
 //
 // Run `run_index` of master seed `seed` draws, each part from its own stream
 //   Stream::derive(seed, run_index, "scenario/mission")  guidance::draw_scenario1 / draw_scenario2
-//   Stream::derive(seed, run_index, "scenario/wind")     physics::draw_wind_scenario1 / 2
-//   Stream::derive(seed, run_index, "scenario/offsets")  atm::draw_offsets_scenario1 / 2
+//   Stream::derive(seed, run_index, "scenario/wind")     physics::draw_wind_scenario
+//   Stream::derive(seed, run_index, "scenario/offsets")  atm::draw_offsets_scenario
 //   Stream::derive(seed, run_index, "scenario/earth")    earth::draw_earth_truth
 // (so, as in the reference, both scenarios share chi_0, chi_1, V_ini, Hp_ini, t_turn, the initial wind, dT_ini, dp_ini
 // and the Earth deviations for one (seed, run)), and writes them as explicit values into the component sections:

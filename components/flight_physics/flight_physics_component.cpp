@@ -45,11 +45,11 @@ public:
         if (auto w = cfg.optional_child("wind"))
             env.wind = config::read_number_keys(*w, kWindRampKeys);
         else if (draw != "none")
-            env.wind = draw == "scenario1" ? draw_wind_scenario1(draws) : draw_wind_scenario2(draws);
+            env.wind = draw_wind_scenario(draws, draw == "scenario1");
         if (auto o = cfg.optional_child("offsets"))
             env.offsets = config::read_number_keys(*o, atm::kOffsetsRampKeys);
         else if (draw != "none")
-            env.offsets = draw == "scenario1" ? atm::draw_offsets_scenario1(draws) : atm::draw_offsets_scenario2(draws);
+            env.offsets = atm::draw_offsets_scenario(draws, draw == "scenario1");
         if (auto e = cfg.optional_child("earth_truth"))
             env.earth = parse_earth(*e);
         else if (draw != "none")

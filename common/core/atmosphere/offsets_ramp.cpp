@@ -27,6 +27,12 @@ OffsetsRampParams draw_offsets_ramp(rnd::Stream& s, const OffsetsRampSpec& spec)
     return p;
 }
 
+OffsetsRampParams draw_offsets_scenario(rnd::Stream& s, bool jumps) {
+    OffsetsRampSpec spec;
+    if (!jumps) spec.sigma_dT_jump_K = spec.sigma_dp_jump_Pa = 0.0;
+    return draw_offsets_ramp(s, spec);
+}
+
 Offsets OffsetsRamp::at(double t_s) const {
     return {ramp_value(t_s, p_.t_ini_dT_s, p_.t_end_dT_s, p_.dT_ini_K, p_.dT_end_K),
             ramp_value(t_s, p_.t_ini_dp_s, p_.t_end_dp_s, p_.dp_ini_Pa, p_.dp_end_Pa)};

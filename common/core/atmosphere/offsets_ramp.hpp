@@ -44,22 +44,11 @@ struct OffsetsRampSpec {
     double sigma_dT_jump_K{3.0};
     double sigma_dp0_Pa{1500.0};
     double sigma_dp_jump_Pa{300.0};
-    static OffsetsRampSpec scenario1() { return {}; }
-    static OffsetsRampSpec scenario2() {
-        OffsetsRampSpec s;
-        s.sigma_dT_jump_K = 0.0;
-        s.sigma_dp_jump_Pa = 0.0;
-        return s;
-    }
 };
 
 OffsetsRampParams draw_offsets_ramp(rnd::Stream& stream, const OffsetsRampSpec& spec);
-inline OffsetsRampParams draw_offsets_scenario1(rnd::Stream& s) {
-    return draw_offsets_ramp(s, OffsetsRampSpec::scenario1());
-}
-inline OffsetsRampParams draw_offsets_scenario2(rnd::Stream& s) {
-    return draw_offsets_ramp(s, OffsetsRampSpec::scenario2());
-}
+// The paper's scenarios: #1 (jumps) the default spec, #2 (no jumps) the same draws with zero jump sigmas.
+OffsetsRampParams draw_offsets_scenario(rnd::Stream& stream, bool jumps);
 
 struct Offsets {
     double dT_K{0.0};

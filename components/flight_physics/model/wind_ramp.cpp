@@ -24,6 +24,12 @@ WindRampParams draw_wind_ramp(rnd::Stream& s, const WindRampSpec& spec) {
     return p;
 }
 
+WindRampParams draw_wind_scenario(rnd::Stream& s, bool jumps) {
+    WindRampSpec spec;
+    if (!jumps) spec.sigma_speed_jump_mps = spec.sigma_bearing_jump_rad = 0.0;
+    return draw_wind_ramp(s, spec);
+}
+
 WindRamp::WindRamp(const WindRampParams& p)
     : p_(p),
       w_ini_(p.speed_ini_mps * std::cos(p.bearing_ini_rad), p.speed_ini_mps * std::sin(p.bearing_ini_rad), 0.0),

@@ -41,18 +41,11 @@ struct WindRampSpec {
     double sigma_speed0_mps{7.0};
     double sigma_speed_jump_mps{3.0};
     double sigma_bearing_jump_rad{math::deg2rad(15.0)};
-    static WindRampSpec scenario1() { return {}; }
-    static WindRampSpec scenario2() {
-        WindRampSpec s;
-        s.sigma_speed_jump_mps = 0.0;
-        s.sigma_bearing_jump_rad = 0.0;
-        return s;
-    }
 };
 
 WindRampParams draw_wind_ramp(rnd::Stream& stream, const WindRampSpec& spec);
-inline WindRampParams draw_wind_scenario1(rnd::Stream& s) { return draw_wind_ramp(s, WindRampSpec::scenario1()); }
-inline WindRampParams draw_wind_scenario2(rnd::Stream& s) { return draw_wind_ramp(s, WindRampSpec::scenario2()); }
+// The paper's scenarios: #1 (jumps) the default spec, #2 (no jumps) the same draws with zero jump sigmas.
+WindRampParams draw_wind_scenario(rnd::Stream& stream, bool jumps);
 
 class WindRamp {
 public:

@@ -79,8 +79,8 @@ TEST(PaperScenario, EachPartFromItsOwnStream) {
     rnd::Stream o = rnd::Stream::derive(3, 7, "scenario/offsets");
     rnd::Stream e = rnd::Stream::derive(3, 7, "scenario/earth");
     const auto dm = guidance::draw_scenario1(m, 100.0);
-    const auto dw = physics::draw_wind_scenario1(w);
-    const auto dof = atm::draw_offsets_scenario1(o);
+    const auto dw = physics::draw_wind_scenario(w, true);
+    const auto dof = atm::draw_offsets_scenario(o, true);
     const auto de = earth::draw_earth_truth(e);
     EXPECT_EQ(g.draws.mission.common.airspeed_ini_mps, dm.airspeed_ini_mps);
     EXPECT_EQ(g.draws.mission.common.turn_time_s, dm.turn_time_s);

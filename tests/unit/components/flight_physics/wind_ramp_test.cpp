@@ -34,7 +34,7 @@ TEST(WindRamp, ScenarioDrawsFollowTheSpecification) {
     double sum_v2 = 0.0, sum_dv2 = 0.0, sum_dchi2 = 0.0;
     int n_small = 0;
     for (int i = 0; i < n; ++i) {
-        const WindRampParams p = physics::draw_wind_scenario1(s);
+        const WindRampParams p = physics::draw_wind_scenario(s, true);
         ASSERT_GE(p.t_ini_s, 50.0);
         ASSERT_GE(p.t_end_s, p.t_ini_s + 300.0);
         ASSERT_GE(p.speed_ini_mps, 0.0);
@@ -57,8 +57,8 @@ TEST(WindRamp, ScenarioDrawsFollowTheSpecification) {
 
     // Scenario 2: constant wind equal to scenario 1's initial wind for the same stream.
     rnd::Stream a = rnd::Stream::derive(9, 4, "wind"), b = rnd::Stream::derive(9, 4, "wind");
-    const WindRampParams p1 = physics::draw_wind_scenario1(a);
-    const WindRampParams p2 = physics::draw_wind_scenario2(b);
+    const WindRampParams p1 = physics::draw_wind_scenario(a, true);
+    const WindRampParams p2 = physics::draw_wind_scenario(b, false);
     EXPECT_EQ(p1.speed_ini_mps, p2.speed_ini_mps);
     EXPECT_EQ(p1.bearing_ini_rad, p2.bearing_ini_rad);
     const WindRamp w2(p2);

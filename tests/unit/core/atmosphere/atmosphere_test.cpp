@@ -116,7 +116,7 @@ TEST(Atmosphere, OffsetsDrawsFollowTheScenarioDistributions) {
     const int n = 8000;
     double sum_dT2 = 0.0, sum_dp2 = 0.0, sum_jT2 = 0.0, sum_jp2 = 0.0;
     for (int i = 0; i < n; ++i) {
-        const atm::OffsetsRampParams p = atm::draw_offsets_scenario1(s1);
+        const atm::OffsetsRampParams p = atm::draw_offsets_scenario(s1, true);
         ASSERT_GE(p.t_ini_dT_s, 50.0);
         ASSERT_GE(p.t_ini_dp_s, 50.0);
         ASSERT_GE(p.t_end_dT_s, p.t_ini_dT_s + 600.0);
@@ -135,8 +135,8 @@ TEST(Atmosphere, OffsetsDrawsFollowTheScenarioDistributions) {
     // Scenario 2 is constant and shares the initial offsets with scenario 1 for the same stream.
     rnd::Stream a = rnd::Stream::derive(5, 3, "offsets");
     rnd::Stream b = rnd::Stream::derive(5, 3, "offsets");
-    const atm::OffsetsRampParams p1 = atm::draw_offsets_scenario1(a);
-    const atm::OffsetsRampParams p2 = atm::draw_offsets_scenario2(b);
+    const atm::OffsetsRampParams p1 = atm::draw_offsets_scenario(a, true);
+    const atm::OffsetsRampParams p2 = atm::draw_offsets_scenario(b, false);
     EXPECT_EQ(p1.dT_ini_K, p2.dT_ini_K);
     EXPECT_EQ(p1.dp_ini_Pa, p2.dp_ini_Pa);
     EXPECT_EQ(p2.dT_end_K, p2.dT_ini_K);
