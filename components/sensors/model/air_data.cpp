@@ -17,13 +17,11 @@ void AirDataSensors::configure(const AirParams& params, rnd::Stream stream) {
 }
 
 AirMeasurement AirDataSensors::measure(std::uint64_t k, double t_s, const AirTruth& truth) {
-    AirMeasurement out;
-    out.step = k;
-    out.t_s = t_s;
-    out.tas_mps = tas_.measure(truth.tas_mps);
-    out.aoa_rad = aoa_.measure(truth.aoa_rad);
-    out.aos_rad = aos_.measure(truth.aos_rad);
-    return out;
+    return {.step = k,
+            .t_s = t_s,
+            .tas_mps = tas_.measure(truth.tas_mps),
+            .aoa_rad = aoa_.measure(truth.aoa_rad),
+            .aos_rad = aos_.measure(truth.aos_rad)};
 }
 
 void AtmosphericSensors::configure(const AtmParams& params, rnd::Stream stream) {
@@ -33,12 +31,7 @@ void AtmosphericSensors::configure(const AtmParams& params, rnd::Stream stream) 
 }
 
 AtmMeasurement AtmosphericSensors::measure(std::uint64_t k, double t_s, const AtmTruth& truth) {
-    AtmMeasurement out;
-    out.step = k;
-    out.t_s = t_s;
-    out.p_Pa = osp_.measure(truth.p_Pa);
-    out.T_K = oat_.measure(truth.T_K);
-    return out;
+    return {.step = k, .t_s = t_s, .p_Pa = osp_.measure(truth.p_Pa), .T_K = oat_.measure(truth.T_K)};
 }
 
 }  // namespace gdnav::sensors
