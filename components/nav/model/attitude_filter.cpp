@@ -140,14 +140,19 @@ AttitudeEstimate AttitudeFilter::realign(std::uint64_t k, double t_s, const ImuS
     return initialize(k, t_s, in);
 }
 
-AttitudeEstimate AttitudeFilter::hand_over(std::uint64_t k, double t_s, const AttitudeHandover& h) {
-    const Quat qn = h.q_nb.normalized();
+Quat AttitudeFilter::set_state(const AttitudeState& s) {
+    const Quat qn = s.q_nb.normalized();
     x_.setZero();
     x_.segment<4>(att::kQ) = math::to_wxyz(qn);
-    x_.segment<3>(att::kW) = h.w_nb_b_rps;
-    x_.segment<3>(att::kEgyr) = h.gyr_err_rps;
-    x_.segment<3>(att::kEmag) = h.mag_err_nT;
-    x_.segment<3>(att::kBdev) = h.b_dev_n_nT;
+    x_.segment<3>(att::kW) = s.w_nb_b_rps;
+    x_.segment<3>(att::kEgyr) = s.gyr_bias_rps;
+    x_.segment<3>(att::kEmag) = s.mag_bias_nT;
+    x_.segment<3>(att::kBdev) = s.b_dev_n_nT;
+    return qn;
+}
+
+AttitudeEstimate AttitudeFilter::hand_over(std::uint64_t k, double t_s, const AttitudeHandover& h) {
+    const Quat qn = set_state(h);
     // Error order of h.p_err: phi_n (0..2), E_gyr (3..5), E_mag (6..8), B_dev (9..11).
     filters::Mat<att::kN, 12> t = filters::Mat<att::kN, 12>::Zero();
     t.block<4, 3>(att::kQ, 0) = 0.5 * filters::xi(x_.segment<4>(att::kQ)) * qn.toRotationMatrix().transpose();
@@ -164,13 +169,7 @@ AttitudeEstimate AttitudeFilter::hand_over(std::uint64_t k, double t_s, const At
 }
 
 AttitudeEstimate AttitudeFilter::initialize(std::uint64_t k, double t_s, const AttitudeInit& in) {
-    x_.setZero();
-    const Quat qn = in.q_nb.normalized();
-    x_.segment<4>(att::kQ) = math::to_wxyz(qn);
-    x_.segment<3>(att::kW) = in.w_nb_b_rps;
-    x_.segment<3>(att::kEgyr) = in.gyr_bias_rps;
-    x_.segment<3>(att::kEmag) = in.mag_bias_nT;
-    x_.segment<3>(att::kBdev) = in.b_dev_n_nT;
+    const Quat qn = set_state(in);
     p_.setZero();
     if (in.att_sigma_rad > 0.0 && in.heading_sigma_rad > 0.0) {
         // NED-side sigmas, carried to the body-side angle error of Xi: dtheta_b = R^T dtheta_n.

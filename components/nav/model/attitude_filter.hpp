@@ -32,12 +32,7 @@
 namespace gdnav::nav {
 
 // Explicit initial estimate and its diagonal 1-sigma (attitude as a rotation angle, or as a quaternion variance).
-struct AttitudeInit {
-    Quat q_nb{Quat::Identity()};
-    Vec3 w_nb_b_rps{Vec3::Zero()};
-    Vec3 gyr_bias_rps{Vec3::Zero()};
-    Vec3 mag_bias_nT{Vec3::Zero()};
-    Vec3 b_dev_n_nT{Vec3::Zero()};
+struct AttitudeInit : AttitudeState {
     double att_sigma_rad{0.0};  // if > 0: P_qq = (sigma^2/4) Xi(q) Xi(q)^T (isotropic angle error)
     // If > 0 (with att_sigma_rad > 0): the angle error about D has this sigma and att_sigma_rad is the tilt's (about
     // N and E): P_qq = (1/4) Xi(q) R^T diag(tilt^2, tilt^2, heading^2) R Xi(q)^T.
@@ -118,6 +113,8 @@ public:
 
 private:
     AttitudeEstimate output(std::uint64_t k, double t_s) const;
+    // x = s (quaternion normalised), P untouched; returns the normalised quaternion.
+    Quat set_state(const AttitudeState& s);
     void normalise_quaternion();
     void step_error_state(bool imu_good, bool mag_good, const att::MeasVec& y, const att::PnVector& pn);
     [[nodiscard]] AttitudeInit init_from_alignment(const ImuSample& imu, const Alignment& align) const;

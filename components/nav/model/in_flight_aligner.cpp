@@ -320,8 +320,8 @@ AttitudeHandover InFlightAligner::handover() const {
     AttitudeHandover h;
     h.q_nb = q_nb_;
     h.w_nb_b_rps = w_nb_b_;
-    h.gyr_err_rps = e_gyr_;
-    h.mag_err_nT = e_mag_;
+    h.gyr_bias_rps = e_gyr_;
+    h.mag_bias_nT = e_mag_;
     h.b_dev_n_nT = b_dev_;
     constexpr int kIdx[4] = {kPhi, kBg, kEm, kBd};
     for (int i = 0; i < 4; ++i)

@@ -37,15 +37,19 @@ struct Alignment {
     Vec3 b_dev_n_nT{Vec3::Zero()}, b_dev_sigma_nT{Vec3::Zero()};
     [[nodiscard]] bool valid() const { return q_nb.coeffs().norm() > 0.5; }
 };
+// The attitude filter's state (attitude_model.hpp) with the quaternion as a rotation: what an initialisation, a
+// hand-over and an estimate of the attitude all carry.
+struct AttitudeState {
+    Quat q_nb{Quat::Identity()};
+    Vec3 w_nb_b_rps{Vec3::Zero()};
+    Vec3 gyr_bias_rps{Vec3::Zero()};  // E_GYR
+    Vec3 mag_bias_nT{Vec3::Zero()};   // E_MAG
+    Vec3 b_dev_n_nT{Vec3::Zero()};    // B_DEV = B_model - B_true
+};
 // The state a joint GNSS/INS estimator hands to the attitude filter (in_flight_aligner.hpp, AttitudeFilter::hand_over):
 // the estimates and the joint covariance of their errors, ordered [phi_n (attitude, NED side: R = exp([phi x]) R_hat),
 // dE_gyr, dE_mag, dB_dev], so that the correlations a turn builds between heading and field errors are kept.
-struct AttitudeHandover {
-    Quat q_nb{Quat::Identity()};
-    Vec3 w_nb_b_rps{Vec3::Zero()};
-    Vec3 gyr_err_rps{Vec3::Zero()};
-    Vec3 mag_err_nT{Vec3::Zero()};
-    Vec3 b_dev_n_nT{Vec3::Zero()};
+struct AttitudeHandover : AttitudeState {
     Eigen::Matrix<double, 12, 12> p_err{Eigen::Matrix<double, 12, 12>::Zero()};
 };
 struct AirSample {
@@ -81,14 +85,9 @@ struct AirDataEstimate {
     double aos_dot_rps{0.0};
 };
 
-struct AttitudeEstimate {
+struct AttitudeEstimate : AttitudeState {
     Stamp stamp;
-    Quat q_nb{Quat::Identity()};
-    Vec3 euler_rad{Vec3::Zero()};  // yaw, pitch, bank
-    Vec3 w_nb_b_rps{Vec3::Zero()};
-    Vec3 gyr_bias_rps{Vec3::Zero()};  // E_GYR
-    Vec3 mag_bias_nT{Vec3::Zero()};   // E_MAG
-    Vec3 b_dev_n_nT{Vec3::Zero()};    // B_DEV = B_model - B_true
+    Vec3 euler_rad{Vec3::Zero()};      // yaw, pitch, bank
     Vec3 att_sigma_rad{Vec3::Zero()};  // 1-sigma attitude uncertainty about N axes
 };
 
