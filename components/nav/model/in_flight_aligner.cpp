@@ -303,26 +303,15 @@ double InFlightAligner::heading_sigma_rad() const { return std::sqrt(p_(kPhi + 2
 Vec3 InFlightAligner::air_offsets_sigma() const { return p_.diagonal().segment<3>(kAd).cwiseMax(0.0).cwiseSqrt(); }
 
 AttitudeEstimate InFlightAligner::estimate(std::uint64_t k, double t_s) const {
-    AttitudeEstimate e;
-    e.stamp = {k, t_s};
-    e.q_nb = q_nb_;
+    AttitudeEstimate e{state(), {k, t_s}};
     const math::Euler eu = math::euler_from_quat(q_nb_);
     e.euler_rad = {eu.yaw_rad, eu.pitch_rad, eu.bank_rad};
-    e.w_nb_b_rps = w_nb_b_;
-    e.gyr_bias_rps = e_gyr_;
-    e.mag_bias_nT = e_mag_;
-    e.b_dev_n_nT = b_dev_;
     e.att_sigma_rad = p_.diagonal().segment<3>(kPhi).cwiseMax(0.0).cwiseSqrt();
     return e;
 }
 
 AttitudeHandover InFlightAligner::handover() const {
-    AttitudeHandover h;
-    h.q_nb = q_nb_;
-    h.w_nb_b_rps = w_nb_b_;
-    h.gyr_bias_rps = e_gyr_;
-    h.mag_bias_nT = e_mag_;
-    h.b_dev_n_nT = b_dev_;
+    AttitudeHandover h{state()};
     constexpr int kIdx[4] = {kPhi, kBg, kEm, kBd};
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j) h.p_err.block<3, 3>(3 * i, 3 * j) = p_.block<3, 3>(kIdx[i], kIdx[j]);

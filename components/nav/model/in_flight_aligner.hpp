@@ -155,6 +155,8 @@ private:
     void update_air(const AirSample& air);
     void inject(const filters::Vec<kN>& dx);
     void start_common(double t_s, const GnssSample& fix, const AirSample* air);
+    // The estimates the attitude filter's state holds (shared by estimate() and handover()).
+    [[nodiscard]] AttitudeState state() const { return {q_nb_, w_nb_b_, e_gyr_, e_mag_, b_dev_}; }
 
     InFlightAlignerSettings s_{};
     double dt_s_{0.01};
