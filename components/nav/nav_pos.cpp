@@ -67,8 +67,7 @@ private:
         if (handover_->available() && handover_->get().started()) {
             const msg::NavHandover& h = handover_->get();
             filter_.set_gnss_ins_calibration(to_vec3(h.wind_n_mps()), to_vec3(h.air_data_offsets()));
-            calibration_given_ = true;
-        } else if (!calibration_given_ && !calibration_missing_said_ && filter_.gnss_denied()) {
+        } else if (!filter_.has_gnss_ins_calibration() && !calibration_missing_said_ && filter_.gnss_denied()) {
             calibration_missing_said_ = true;
             publish_status(fmt::format("GNSS-denied at t = {:.2f} s without the joint estimator's wind (no "
                                        "gdnav/NavHandover): the position filter keeps its own",
@@ -223,7 +222,7 @@ private:
     std::optional<AlignmentMonitor> monitor_;
     std::unique_ptr<Input<msg::NavHandover>> handover_;  // following the in-flight alignment, or wind_at_loss: gnss_ins
     bool follow_{false};                                  // follow_in_flight_alignment
-    bool calibration_given_{false}, calibration_missing_said_{false};
+    bool calibration_missing_said_{false};
     bool aligned_step_seen_{false};
     bool aligned_seen_{false};
     std::unique_ptr<Output<msg::NavAlignment>> align_out_;

@@ -14,6 +14,13 @@ Vec3 vtas_dot_body(double v, double a, double b, double vd, double ad, double bd
             vd * sa * cb + ad * v * ca * cb - bd * v * sa * sb};
 }
 
+Eigen::Matrix3d vtas_jacobian(double tas, double aoa, double aos) {
+    Eigen::Matrix3d j;
+    j << vtas_dot_body(tas, aoa, aos, 1.0, 0.0, 0.0), vtas_dot_body(tas, aoa, aos, 0.0, 1.0, 0.0),
+        vtas_dot_body(tas, aoa, aos, 0.0, 0.0, 1.0);
+    return j;
+}
+
 Vec3 ground_accel_n(const Quat& q_nb, const Vec3& f_b, double lat, double h, const Vec3& v) {
     return q_nb * f_b - earth::w_en_n(lat, h, v).cross(v) + earth::gravity_n(lat, h) - earth::a_cor_n(lat, v);
 }

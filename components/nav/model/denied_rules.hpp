@@ -41,6 +41,8 @@ struct DeniedInputs {
 
 // Airspeed vector time derivative in body from (v_tas, aoa, aos) and their rates.
 Vec3 vtas_dot_body(double tas, double aoa, double aos, double tas_dot, double aoa_dot, double aos_dot);
+// The same derivative as a matrix: d v_tas_b / d(tas, aoa, aos), its columns vtas_dot_body of unit rates.
+Eigen::Matrix3d vtas_jacobian(double tas, double aoa, double aos);
 // Ground acceleration in NED, paper eq. (Ana_PosFilter_xhor_double_vndot).
 Vec3 ground_accel_n(const Quat& q_nb, const Vec3& f_b, double lat_rad, double h_m, const Vec3& v_n);
 // Geometric altitude from pressure altitude, temperature and pressure offsets (INSA + spherical Earth).

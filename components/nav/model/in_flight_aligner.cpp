@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "denied_rules.hpp"
 #include "input_checks.hpp"
 #include "nav_earth.hpp"
 #include "nav_init.hpp"
@@ -263,17 +264,12 @@ void InFlightAligner::update_air(const AirSample& air) {
     const Mat3 r_nb = q_nb_.toRotationMatrix();
     const double tas = air.tas_mps - b_air_.x(), aoa = air.aoa_rad - b_air_.y(), aos = air.aos_rad - b_air_.z();
     const Vec3 a_n = r_nb * math::vtas_body(tas, aoa, aos);
-    const double ca = std::cos(aoa), sa = std::sin(aoa), cb = std::cos(aos), sb = std::sin(aos);
-    Mat3 jac;  // d v_air_b / d(TAS, AOA, AOS), v_air_b = TAS (cos AOA cos AOS, sin AOS, sin AOA cos AOS)
-    jac << ca * cb, -tas * sa * cb, -tas * ca * sb,  //
-        sb, 0.0, tas * cb,                           //
-        sa * cb, tas * ca * cb, -tas * sa * sb;
     filters::Mat<3, kN> h = filters::Mat<3, kN>::Zero();
     h.block<3, 3>(0, kPhi) = math::skew(a_n);
     h.block<3, 3>(0, kV) = Mat3::Identity();
     h.block<3, 3>(0, kW) = -Mat3::Identity();
     h.block<3, 3>(0, kT) = -Mat3::Identity();
-    h.block<3, 3>(0, kAd) = r_nb * jac;
+    h.block<3, 3>(0, kAd) = r_nb * denied::vtas_jacobian(tas, aoa, aos);
     const filters::Vec<3> r = a_n + wind_n_ + turb_n_ - v_n_;
     filters::Vec<kN> dx = filters::Vec<kN>::Zero();
     const auto info = filters::joseph_update<kN, 3>(

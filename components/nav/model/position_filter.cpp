@@ -72,6 +72,7 @@ void PositionFilter::configure(const Tuning& tuning, rnd::Stream stream) {
     reacquisitions_ = gate_accepted_ = 0;
     gate_d2_max_accepted_ = gate_d2_last_ = 0.0;
     initialized_ = false;
+    gnss_ins_.reset();
 }
 
 PositionEstimate PositionFilter::initialize(std::uint64_t k, double t_s, const ImuSample& imu, const GnssSample& gnss,
@@ -272,10 +273,8 @@ void PositionFilter::enter_denied(double t_s) {
     ds_.lat_rad = x_(aided::kLat);
     ds_.h_m = x_(aided::kH);
     ds_.v_n_mps = x_.segment<3>(aided::kV);
-    ds_.wind_n_mps = tun_.wind_from_gnss_ins && gnss_ins_given_ ? gnss_ins_wind_n_mps_ : wind_at_fix_;
+    ds_.wind_n_mps = gnss_ins_ ? gnss_ins_->wind_n_mps : wind_at_fix_;
     ds_.dp_Pa = dp_at_fix_;
-    denied_air_offsets_.reset();
-    if (tun_.wind_from_gnss_ins && gnss_ins_given_) denied_air_offsets_ = gnss_ins_air_offsets_;
 }
 
 void PositionFilter::denied_step(const ImuSample& imu, bool imu_good, const AirDataEstimate& air,
@@ -295,10 +294,10 @@ void PositionFilter::denied_step(const ImuSample& imu, bool imu_good, const AirD
     in.w_nb_b_rps = att.w_nb_b_rps;
     in.f_b_mps2 = xd_.head<3>();
     in.air = air;
-    if (denied_air_offsets_) {
-        in.air.tas_mps -= denied_air_offsets_->x();
-        in.air.aoa_rad -= denied_air_offsets_->y();
-        in.air.aos_rad -= denied_air_offsets_->z();
+    if (gnss_ins_) {
+        in.air.tas_mps -= gnss_ins_->air_offsets.x();
+        in.air.aoa_rad -= gnss_ins_->air_offsets.y();
+        in.air.aos_rad -= gnss_ins_->air_offsets.z();
     }
     ds_ = denied::step(ds_, in, tun_.dt_s, tun_.horizontal, tun_.vertical);
 }

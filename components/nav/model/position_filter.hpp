@@ -120,12 +120,12 @@ public:
                           const AirDataEstimate& air, const AttitudeEstimate& att);
 
     // With `wind_at_loss: gnss_ins`: the joint estimator's slow wind (NED) and air-data offsets (TAS [m/s], AOA, AOS
-    // [rad]); the last given before the GNSS loss are kept through the denied phase, the offsets taken off the air data.
+    // [rad]), given before each step; what was given before the GNSS loss is kept through the denied phase (given
+    // while denied, it is ignored), the offsets taken off the air data there.
     void set_gnss_ins_calibration(const Vec3& wind_n_mps, const Vec3& air_offsets) {
-        gnss_ins_wind_n_mps_ = wind_n_mps;
-        gnss_ins_air_offsets_ = air_offsets;
-        gnss_ins_given_ = true;
+        if (tun_.wind_from_gnss_ins && !monitor_.denied()) gnss_ins_ = GnssInsCalibration{wind_n_mps, air_offsets};
     }
+    [[nodiscard]] bool has_gnss_ins_calibration() const { return gnss_ins_.has_value(); }
 
     // The runtime declared the GNSS publisher dead: the next step runs GNSS-denied.
     void set_gnss_publisher_dead() { monitor_.set_publisher_dead(); }
@@ -171,9 +171,11 @@ private:
     double dp_lp_{0.0};
     Vec3 wind_at_fix_{Vec3::Zero()};
     double dp_at_fix_{0.0};
-    bool gnss_ins_given_{false};
-    Vec3 gnss_ins_wind_n_mps_{Vec3::Zero()}, gnss_ins_air_offsets_{Vec3::Zero()};
-    std::optional<Vec3> denied_air_offsets_;  // wind_at_loss: gnss_ins, from the loss on
+    struct GnssInsCalibration {
+        Vec3 wind_n_mps;
+        Vec3 air_offsets;  // TAS [m/s], AOA, AOS [rad]
+    };
+    std::optional<GnssInsCalibration> gnss_ins_;  // wind_at_loss: gnss_ins, the last given before the loss
     // denied phase
     filters::Vec<kNd> xd_ = filters::Vec<kNd>::Zero();
     filters::SqMat<kNd> pd_ = filters::SqMat<kNd>::Zero();

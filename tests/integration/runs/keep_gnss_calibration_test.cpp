@@ -107,30 +107,31 @@ TEST(KeepGnssCalibration, TheOldPerComponentAlignerSectionInNavPosIsOneClearErro
     EXPECT_NE(r.output.find("follow_in_flight_alignment"), std::string::npos) << r.output;
 }
 
+// A 10-step run of scenario #2 with a variant file of this content: its output and exit code.
+static Result run_with_variant(const std::string& tag, const std::string& content) {
+    const fs::path dir = temp_dir(tag);
+    const fs::path variant = dir / "variant.yaml";
+    gdnav::test::write_text(variant, content);
+    Result r = run({kExe, "run", "--scenario", "paper2", "--steps", "10", "--layout", "direct", "--variant",
+                    variant.string(), "--out", (dir / "out").string()},
+                   60.0);
+    fs::remove_all(dir);
+    return r;
+}
+
 TEST(KeepGnssCalibration, TheDeniedPhaseEstimatorWithoutTheAidedOneIsOneClearError) {
-    const fs::path dir = temp_dir("kgc-bad-variant");
-    const fs::path variant = dir / "denied_only.yaml";
-    gdnav::test::write_text(variant, "denied_attitude: gnss_ins\nattitude: {specific_force: baseline}\n"
-                        "position: {horizontal: frozen_wind, vertical: pressure}\n");
-    const Result r = run({kExe, "run", "--scenario", "paper2", "--steps", "10", "--layout", "direct", "--variant",
-                          variant.string(), "--out", (dir / "out").string()},
-                         60.0);
+    const Result r = run_with_variant("kgc-bad-variant", "denied_attitude: gnss_ins\nattitude: {specific_force: baseline}\n"
+                                                         "position: {horizontal: frozen_wind, vertical: pressure}\n");
     EXPECT_NE(r.exit_code, 0);
     EXPECT_NE(r.output.find("denied_attitude"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("needs aided_attitude: gnss_ins"), std::string::npos) << r.output;
-    fs::remove_all(dir);
 }
 
 TEST(KeepGnssCalibration, TheEstimatorsWindWithoutTheDeniedPhaseEstimatorIsOneClearError) {
-    const fs::path dir = temp_dir("kgc-bad-wind");
-    const fs::path variant = dir / "wind_only.yaml";
-    gdnav::test::write_text(variant, "attitude: {specific_force: baseline}\n"
-                                     "position: {horizontal: frozen_wind, vertical: pressure, wind_at_loss: gnss_ins}\n");
-    const Result r = run({kExe, "run", "--scenario", "paper2", "--steps", "10", "--layout", "direct", "--variant",
-                          variant.string(), "--out", (dir / "out").string()},
-                         60.0);
+    const Result r = run_with_variant("kgc-bad-wind", "attitude: {specific_force: baseline}\n"
+                                                      "position: {horizontal: frozen_wind, vertical: pressure, "
+                                                      "wind_at_loss: gnss_ins}\n");
     EXPECT_NE(r.exit_code, 0);
     EXPECT_NE(r.output.find("position.wind_at_loss"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("needs denied_attitude: gnss_ins"), std::string::npos) << r.output;
-    fs::remove_all(dir);
 }
