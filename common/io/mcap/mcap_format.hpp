@@ -14,6 +14,11 @@ namespace gdnav::mcap {
 
 inline constexpr std::uint8_t kMagic[8] = {0x89, 'M', 'C', 'A', 'P', 0x30, '\r', '\n'};
 
+// The well-known encodings (https://mcap.dev/spec/registry) of every gdnav channel, recorded (io/recording) or live
+// (io/viewer, the Foxglove WebSocket bridge): messages in CDR with their encapsulation header, schemas in OMG IDL.
+inline constexpr const char* kCdr = "cdr";
+inline constexpr const char* kOmgIdl = "omgidl";
+
 enum class Op : std::uint8_t {
     Header = 0x01,
     Footer = 0x02,

@@ -19,13 +19,14 @@
 #include <string>
 #include <vector>
 
+#include "io/mcap/mcap_format.hpp"
 #include "msgs/message_ops.hpp"
 
 namespace gdnav::recorder {
 
 inline constexpr const char* kRecordingFile = "run.mcap";
-inline constexpr const char* kMessageEncoding = "cdr";
-inline constexpr const char* kSchemaEncoding = "omgidl";
+inline constexpr const char* kMessageEncoding = mcap::kCdr;
+inline constexpr const char* kSchemaEncoding = mcap::kOmgIdl;
 inline constexpr const char* kProfile = "x-gdnav";
 inline constexpr const char* kRunMetadataName = "gdnav.run";
 inline constexpr const char* kEndMetadataName = "gdnav.end";

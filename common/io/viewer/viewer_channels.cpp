@@ -1,5 +1,6 @@
 #include "io/viewer/viewer_channels.hpp"
 
+#include "io/mcap/mcap_format.hpp"
 #include "io/run_series/series_columns.hpp"  // nav_recorder: the metrics views of Truth and the estimates
 #include "msgs/messages.hpp"
 #include "framework/msg_eigen.hpp"
@@ -15,8 +16,8 @@ namespace gdnav::viewer {
 
 namespace {
 
-constexpr const char* kOmgIdl = "omgidl";
-constexpr const char* kCdr = "cdr";
+using mcap::kCdr;
+using mcap::kOmgIdl;
 constexpr const char* kWorldFrame = "enu";
 
 enum Index : std::size_t { kTrueFix, kEstFix, kTrueTf, kEstTf, kErrors, kTruePose, kEstPose, kCount };

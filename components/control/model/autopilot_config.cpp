@@ -1,6 +1,8 @@
 #include "autopilot_config.hpp"
 
+#include <cstddef>
 #include <stdexcept>
+#include <string>
 
 namespace gdnav::control {
 
@@ -41,51 +43,63 @@ PidGains read_outer_loop(const Config& c) {
     return g;
 }
 
+// What a mode selects: its set-point ramp and the gains of its outer loop (none: the primary loop alone).
+template <class Mode>
+struct ModeEntry {
+    Mode mode;
+    double AutopilotConfig::RampSteps::*ramp;
+    PidGains AutopilotConfig::*outer;
+};
+using Ramp = AutopilotConfig::RampSteps;
+constexpr ModeEntry<gnc::ElevatorMode> kElevatorModes[] = {
+    {gnc::ElevatorMode::pitch, &Ramp::pitch, nullptr},
+    {gnc::ElevatorMode::pressure_altitude, &Ramp::pressure_altitude, &AutopilotConfig::pressure_altitude},
+    {gnc::ElevatorMode::altitude, &Ramp::altitude, &AutopilotConfig::altitude},
+    {gnc::ElevatorMode::air_path_angle, &Ramp::air_path_angle, &AutopilotConfig::air_path_angle},
+};
+constexpr ModeEntry<gnc::AileronMode> kAileronModes[] = {
+    {gnc::AileronMode::bank, &Ramp::bank, nullptr},
+    {gnc::AileronMode::bearing, &Ramp::bearing, &AutopilotConfig::bearing},
+    {gnc::AileronMode::heading, &Ramp::heading, &AutopilotConfig::heading},
+    {gnc::AileronMode::air_bank, &Ramp::air_bank, &AutopilotConfig::air_bank},
+    {gnc::AileronMode::air_bearing, &Ramp::air_bearing, &AutopilotConfig::air_bearing},
+};
+
+// The entry of `m`; nullptr for a value that is no mode of the channel.
+template <class Mode, std::size_t N>
+const ModeEntry<Mode>* entry_of(const ModeEntry<Mode> (&modes)[N], Mode m) {
+    for (const ModeEntry<Mode>& e : modes)
+        if (e.mode == m) return &e;
+    return nullptr;
+}
+
+template <class Mode, std::size_t N>
+double ramp_of(const AutopilotConfig& a, const ModeEntry<Mode> (&modes)[N], Mode m, const char* channel) {
+    const ModeEntry<Mode>* e = entry_of(modes, m);
+    if (e == nullptr) throw std::invalid_argument(std::string("autopilot: invalid ") + channel + " mode");
+    return a.ramp.*(e->ramp);
+}
+
+template <class Mode, std::size_t N>
+const PidGains& outer_of(const AutopilotConfig& a, const ModeEntry<Mode> (&modes)[N], Mode m, const char* channel) {
+    const ModeEntry<Mode>* e = entry_of(modes, m);
+    if (e == nullptr || e->outer == nullptr)
+        throw std::invalid_argument(std::string("autopilot: ") + channel + " mode has no outer loop");
+    return a.*(e->outer);
+}
+
 }  // namespace
 
 double AutopilotConfig::ramp_steps(gnc::ThrottleMode) const { return ramp.airspeed; }
 double AutopilotConfig::ramp_steps(gnc::RudderMode) const { return ramp.sideslip; }
-
-double AutopilotConfig::ramp_steps(gnc::ElevatorMode m) const {
-    switch (m) {
-        case gnc::ElevatorMode::pitch: return ramp.pitch;
-        case gnc::ElevatorMode::pressure_altitude: return ramp.pressure_altitude;
-        case gnc::ElevatorMode::altitude: return ramp.altitude;
-        case gnc::ElevatorMode::air_path_angle: return ramp.air_path_angle;
-    }
-    throw std::invalid_argument("autopilot: invalid elevator mode");
-}
-
-double AutopilotConfig::ramp_steps(gnc::AileronMode m) const {
-    switch (m) {
-        case gnc::AileronMode::bank: return ramp.bank;
-        case gnc::AileronMode::bearing: return ramp.bearing;
-        case gnc::AileronMode::heading: return ramp.heading;
-        case gnc::AileronMode::air_bank: return ramp.air_bank;
-        case gnc::AileronMode::air_bearing: return ramp.air_bearing;
-    }
-    throw std::invalid_argument("autopilot: invalid aileron mode");
-}
+double AutopilotConfig::ramp_steps(gnc::ElevatorMode m) const { return ramp_of(*this, kElevatorModes, m, "elevator"); }
+double AutopilotConfig::ramp_steps(gnc::AileronMode m) const { return ramp_of(*this, kAileronModes, m, "aileron"); }
 
 const PidGains& AutopilotConfig::outer_gains(gnc::ElevatorMode m) const {
-    switch (m) {
-        case gnc::ElevatorMode::pressure_altitude: return pressure_altitude;
-        case gnc::ElevatorMode::altitude: return altitude;
-        case gnc::ElevatorMode::air_path_angle: return air_path_angle;
-        case gnc::ElevatorMode::pitch: break;
-    }
-    throw std::invalid_argument("autopilot: elevator mode has no outer loop");
+    return outer_of(*this, kElevatorModes, m, "elevator");
 }
-
 const PidGains& AutopilotConfig::outer_gains(gnc::AileronMode m) const {
-    switch (m) {
-        case gnc::AileronMode::bearing: return bearing;
-        case gnc::AileronMode::heading: return heading;
-        case gnc::AileronMode::air_bank: return air_bank;
-        case gnc::AileronMode::air_bearing: return air_bearing;
-        case gnc::AileronMode::bank: break;
-    }
-    throw std::invalid_argument("autopilot: aileron mode has no outer loop");
+    return outer_of(*this, kAileronModes, m, "aileron");
 }
 
 AutopilotConfig read_autopilot_config(const Config& cfg) {

@@ -33,43 +33,70 @@ using Mat3 = Eigen::Matrix3d;
 double deg_key(const config::Config& c, const char* key, double fallback_rad, Range deg) {
     return math::deg2rad(c.get_double(key, math::rad2deg(fallback_rad), deg));
 }
+
+// One key of the section (keys and ranges: this file's first comment): the setting it sets and its range in the
+// file's unit. `degrees`: the file gives degrees, the setting is in radians; `steps`: a whole number of steps.
+using Settings = InFlightAlignerSettings;
+struct Key {
+    const char* name;
+    double Settings::*real;
+    int Settings::*count;
+    Range range;
+    bool deg;
+};
+constexpr Key plain(const char* name, double Settings::*v, Range r) { return {name, v, nullptr, r, false}; }
+constexpr Key degrees(const char* name, double Settings::*v, Range r) { return {name, v, nullptr, r, true}; }
+constexpr Key steps(const char* name, int Settings::*n, Range r) { return {name, nullptr, n, r, false}; }
+
+// In the order they are read (the first bad key is the one reported).
+constexpr Key kKeys[] = {
+    degrees("tilt_sigma_deg", &Settings::tilt_sigma_rad, {0.1, 30.0}),
+    degrees("heading_sigma_deg", &Settings::heading_sigma_rad, {0.5, 60.0}),
+    degrees("gyr_bias_sigma_dps", &Settings::gyr_bias_sigma_rps, {1e-4, 5.0}),
+    plain("acc_bias_sigma_mps2", &Settings::acc_bias_sigma_mps2, {1e-4, 5.0}),
+    plain("mag_bias_sigma_nT", &Settings::mag_bias_sigma_nT, {1.0, 1e4}),
+    plain("b_dev_sigma_nT", &Settings::b_dev_sigma_nT, {1.0, 1e4}),
+    degrees("gyr_noise_dps_rts", &Settings::gyr_noise_rps_rts, {1e-5, 1.0}),
+    plain("acc_noise_mps2_rts", &Settings::acc_noise_mps2_rts, {1e-5, 1.0}),
+    degrees("gyr_bias_walk_dps_s_rts", &Settings::gyr_bias_walk_rps_s_rts, {0.0, 0.1}),
+    plain("acc_bias_walk_mps2_s_rts", &Settings::acc_bias_walk_mps2_s_rts, {0.0, 0.1}),
+    plain("mag_walk_nT_rts", &Settings::mag_walk_nT_rts, {0.0, 100.0}),
+    plain("mag_noise_nT", &Settings::mag_noise_nT, {0.1, 1e4}),
+    steps("mag_period_steps", &Settings::mag_period_steps, {1, 1000}),
+    plain("gnss_hor_sigma_m", &Settings::gnss_hor_sigma_m, {0.1, 100.0}),
+    plain("gnss_ver_sigma_m", &Settings::gnss_ver_sigma_m, {0.1, 100.0}),
+    plain("gnss_vel_sigma_mps", &Settings::gnss_vel_sigma_mps, {0.01, 10.0}),
+    plain("wind_sigma_mps", &Settings::wind_sigma_mps, {0.01, 50.0}),
+    plain("wind_walk_mps_s_rts", &Settings::wind_walk_mps_s_rts, {0.0, 10.0}),
+    plain("air_vel_sigma_mps", &Settings::air_vel_sigma_mps, {0.01, 20.0}),
+    plain("air_vel_sigma_denied_mps", &Settings::air_vel_sigma_denied_mps, {0.01, 20.0}),
+    steps("air_period_steps", &Settings::air_period_steps, {1, 1000}),
+    plain("mag_scale_sigma", &Settings::mag_scale_sigma, {0.0, 0.1}),
+    plain("mag_cross_sigma", &Settings::mag_cross_sigma, {0.0, 0.1}),
+    plain("turb_sigma_mps", &Settings::turb_sigma_mps, {0.0, 10.0}),
+    plain("turb_tau_s", &Settings::turb_tau_s, {0.1, 1000.0}),
+    plain("tas_offset_sigma_mps", &Settings::tas_offset_sigma_mps, {0.0, 10.0}),
+    degrees("aoa_offset_sigma_deg", &Settings::aoa_offset_sigma_rad, {0.0, 10.0}),
+    degrees("aos_offset_sigma_deg", &Settings::aos_offset_sigma_rad, {0.0, 10.0}),
+    degrees("tilt_sigma_max_deg", &Settings::tilt_sigma_max_rad, {0.001, 10.0}),
+    degrees("heading_sigma_max_deg", &Settings::heading_sigma_max_rad, {0.001, 10.0}),
+    plain("hold_s", &Settings::hold_s, {0.0, 600.0}),
+    plain("not_before_s", &Settings::not_before_s, {-1e6, 1e6}),
+};
 }  // namespace
 
 InFlightAlignerSettings parse_in_flight_alignment(const config::Config& c, const InFlightAlignerSettings& base) {
     InFlightAlignerSettings s = base;
-    s.tilt_sigma_rad = deg_key(c, "tilt_sigma_deg", s.tilt_sigma_rad, Range{0.1, 30.0});
-    s.heading_sigma_rad = deg_key(c, "heading_sigma_deg", s.heading_sigma_rad, Range{0.5, 60.0});
-    s.gyr_bias_sigma_rps = deg_key(c, "gyr_bias_sigma_dps", s.gyr_bias_sigma_rps, Range{1e-4, 5.0});
-    s.acc_bias_sigma_mps2 = c.get_double("acc_bias_sigma_mps2", s.acc_bias_sigma_mps2, Range{1e-4, 5.0});
-    s.mag_bias_sigma_nT = c.get_double("mag_bias_sigma_nT", s.mag_bias_sigma_nT, Range{1.0, 1e4});
-    s.b_dev_sigma_nT = c.get_double("b_dev_sigma_nT", s.b_dev_sigma_nT, Range{1.0, 1e4});
-    s.gyr_noise_rps_rts = deg_key(c, "gyr_noise_dps_rts", s.gyr_noise_rps_rts, Range{1e-5, 1.0});
-    s.acc_noise_mps2_rts = c.get_double("acc_noise_mps2_rts", s.acc_noise_mps2_rts, Range{1e-5, 1.0});
-    s.gyr_bias_walk_rps_s_rts = deg_key(c, "gyr_bias_walk_dps_s_rts", s.gyr_bias_walk_rps_s_rts, Range{0.0, 0.1});
-    s.acc_bias_walk_mps2_s_rts = c.get_double("acc_bias_walk_mps2_s_rts", s.acc_bias_walk_mps2_s_rts, Range{0.0, 0.1});
-    s.mag_walk_nT_rts = c.get_double("mag_walk_nT_rts", s.mag_walk_nT_rts, Range{0.0, 100.0});
-    s.mag_noise_nT = c.get_double("mag_noise_nT", s.mag_noise_nT, Range{0.1, 1e4});
-    s.mag_period_steps = static_cast<int>(c.get_int("mag_period_steps", s.mag_period_steps, 1, 1000));
-    s.gnss_hor_sigma_m = c.get_double("gnss_hor_sigma_m", s.gnss_hor_sigma_m, Range{0.1, 100.0});
-    s.gnss_ver_sigma_m = c.get_double("gnss_ver_sigma_m", s.gnss_ver_sigma_m, Range{0.1, 100.0});
-    s.gnss_vel_sigma_mps = c.get_double("gnss_vel_sigma_mps", s.gnss_vel_sigma_mps, Range{0.01, 10.0});
-    s.wind_sigma_mps = c.get_double("wind_sigma_mps", s.wind_sigma_mps, Range{0.01, 50.0});
-    s.wind_walk_mps_s_rts = c.get_double("wind_walk_mps_s_rts", s.wind_walk_mps_s_rts, Range{0.0, 10.0});
-    s.air_vel_sigma_mps = c.get_double("air_vel_sigma_mps", s.air_vel_sigma_mps, Range{0.01, 20.0});
-    s.air_vel_sigma_denied_mps =
-        c.get_double("air_vel_sigma_denied_mps", s.air_vel_sigma_denied_mps, Range{0.01, 20.0});
-    s.air_period_steps = static_cast<int>(c.get_int("air_period_steps", s.air_period_steps, 1, 1000));
-    s.mag_scale_sigma = c.get_double("mag_scale_sigma", s.mag_scale_sigma, Range{0.0, 0.1});
-    s.mag_cross_sigma = c.get_double("mag_cross_sigma", s.mag_cross_sigma, Range{0.0, 0.1});
-    s.turb_sigma_mps = c.get_double("turb_sigma_mps", s.turb_sigma_mps, Range{0.0, 10.0});
-    s.turb_tau_s = c.get_double("turb_tau_s", s.turb_tau_s, Range{0.1, 1000.0});
-    s.tas_offset_sigma_mps = c.get_double("tas_offset_sigma_mps", s.tas_offset_sigma_mps, Range{0.0, 10.0});
-    s.aoa_offset_sigma_rad = deg_key(c, "aoa_offset_sigma_deg", s.aoa_offset_sigma_rad, Range{0.0, 10.0});
-    s.aos_offset_sigma_rad = deg_key(c, "aos_offset_sigma_deg", s.aos_offset_sigma_rad, Range{0.0, 10.0});
-    s.tilt_sigma_max_rad = deg_key(c, "tilt_sigma_max_deg", s.tilt_sigma_max_rad, Range{0.001, 10.0});
-    s.heading_sigma_max_rad = deg_key(c, "heading_sigma_max_deg", s.heading_sigma_max_rad, Range{0.001, 10.0});
-    s.hold_s = c.get_double("hold_s", s.hold_s, Range{0.0, 600.0});
-    s.not_before_s = c.get_double("not_before_s", s.not_before_s, Range{-1e6, 1e6});
+    for (const Key& k : kKeys) {
+        if (k.count) {
+            const auto lo = static_cast<std::int64_t>(k.range.lo), hi = static_cast<std::int64_t>(k.range.hi);
+            s.*k.count = static_cast<int>(c.get_int(k.name, s.*k.count, lo, hi));
+        } else if (k.deg) {
+            s.*k.real = deg_key(c, k.name, s.*k.real, k.range);
+        } else {
+            s.*k.real = c.get_double(k.name, s.*k.real, k.range);
+        }
+    }
     c.finish();
     return s;
 }
