@@ -39,7 +39,7 @@ void DdsHost::Impl::setup() {
         std::all_of(raw.begin(), raw.end(), [](const Component* c) { return host::hosted_as_observer(*c); });
     if (observers_only && rc.observer_nice > 0) {
         const std::string who = join_topics(hosted);
-        if (const std::string p = lower_cpu_priority(rc.observer_nice, control.pulse_tid()); p.empty())
+        if (const std::string p = lower_cpu_priority(rc.observer_nice, control.pulse().tid()); p.empty())
             spdlog::info("{}: only observers in this process: CPU priority nice {} (run.observer_nice)", who,
                          rc.observer_nice);
         else
@@ -67,8 +67,10 @@ host::Local DdsHost::Impl::make_local(Component* c) {
     for (InputBase* in : c->inputs()) {
         host::Channel* ch = inputs.add(in);
         // An observer's input that may read a mirror waits for the member table (Observers::make_readers).
-        ch->deferred = observers.defers(l, *in);
-        if (!ch->deferred) ch->reader = host::topic_reader(*dds, *ch, l.observer);
+        if (observers.defers(l, *in))
+            ch->defer_reader();
+        else
+            ch->set_reader(host::topic_reader(*dds, *ch, l.observer));
         l.inputs.push_back(ch);
     }
     for (OutputBase* o : c->outputs()) {
@@ -96,8 +98,8 @@ void DdsHost::Impl::pump() {
 }
 
 void DdsHost::Impl::process_data(double now) {
-    if (control.read_ticks(now)) inputs.apply_dead_mask(control.dead_mask());
-    const RunInfo& ri = control.timing().ri;
+    if (control.read_ticks(now)) inputs.apply_dead_mask(control.members().dead_mask());
+    const RunInfo& ri = control.run().timing().ri;
     for (auto& l : locals)
         for (host::Channel* ch : l.inputs) inputs.read(l, *ch, ri);
     if (in_advance) return;
@@ -121,7 +123,7 @@ bool DdsHost::Impl::tick_over(int& code) {
         return false;
     }
     if (const double stall = last_loop_s > 0.0 ? own_stall_s(now - last_loop_s) : 0.0; stall > 0.0) {
-        control.discount_own_stall(stall);
+        control.run().discount_own_stall(stall);
         spdlog::debug("host {}: not scheduled for {:.2f} s; the clock's silence meanwhile is not counted",
                       control.host_id(), stall);
     }
@@ -132,15 +134,15 @@ bool DdsHost::Impl::tick_over(int& code) {
         return false;
     }
     control.read_status(now);
-    if (control.phase() == host::ControlPlane::Phase::Matching && all_matched()) control.matched_all();
+    if (control.run().phase() == host::RunPhase::Phase::Matching && all_matched()) control.matched_all();
     control.heartbeat(now, locals);
     pending.store(false);
     process_data(now);
-    return control.clock_alive(now, code);
+    return control.run().clock_alive(now, code);
 }
 
 int DdsHost::Impl::loop() {
-    control.start(steady_now_s());
+    control.run().start(steady_now_s());
     ConditionSeq active;
     const Duration_t slice(0, static_cast<std::uint32_t>(kWaitSliceS * 1e9));
     int code = kExitOk;
@@ -153,7 +155,7 @@ int DdsHost::Impl::loop() {
         lock.unlock();
         pump();
     }
-    control.stop_pulse();
+    control.pulse().stop();
     // STOP came after every barrier member's last StepDone, so the samples of the last steps are here: an observer,
     // which nobody waited for, computes what it still can before it finishes.
     if (code == kExitOk) process_data(steady_now_s());
@@ -189,7 +191,7 @@ int DdsHost::Impl::finish(int code) {
     control.report_foreign();
     inputs.report_lateness(locals, rc.out_dir);
     host::Inputs::report_rejected(locals);
-    host::Observers::report(locals, control.timing().ri.steps);
+    host::Observers::report(locals, control.run().timing().ri.steps);
     return finish_code;
 }
 

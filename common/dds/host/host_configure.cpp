@@ -7,27 +7,27 @@
 namespace gdnav::runtime {
 
 bool DdsHost::Impl::configure(const msg::RunControl& c) {
-    const RunInfo& ri = control.timing().ri;
+    const RunInfo& ri = control.run().timing().ri;
     if (!faults.adopt(c.faults().to_string(), ri, locals)) return false;
     for (auto& l : locals) {
-        l.index = control.index_of(l.comp->name());
+        l.index = control.members().index_of(l.comp->name());
         if (l.index == UINT32_MAX) {
             spdlog::error("member '{}' is not in the clock's member table (another run on this domain, or a "
                           "name the run does not expect)", l.comp->name());
             not_in_table = true;
             continue;
         }
-        inputs.configure(l, control.table(), faults.schedule(), ri);
+        inputs.configure(l, control.members().entries(), faults.schedule(), ri);
     }
-    observers.make_readers(locals, control.table(), *dds, &listener);
+    observers.make_readers(locals, control.members().entries(), *dds, &listener);
     return true;
 }
 
 bool DdsHost::Impl::live_faults(const msg::RunControl& c) {
-    const RunInfo& ri = control.timing().ri;
+    const RunInfo& ri = control.run().timing().ri;
     const auto first = faults.adopt_live(c.faults().to_string(), ri);
     if (!first) return false;
-    inputs.extend_faults(faults.schedule(), *first, control.table(), ri);
+    inputs.extend_faults(faults.schedule(), *first, control.members().entries(), ri);
     for (std::size_t i = *first; i < faults.schedule().size(); ++i) {
         const faults::Fault& f = faults.schedule().faults()[i];
         if (f.kind == faults::Kind::Rejoin) {
@@ -45,11 +45,11 @@ void DdsHost::Impl::rejoin(const faults::Fault& f) {
             l.awaiting_rejoin = false;
             l.next_step = f.from_step;
             spdlog::info("member '{}' rejoins the run at step {} (t = {:.2f} s)", f.target, f.from_step,
-                         control.timing().ri.time_of(f.from_step));
+                         control.run().timing().ri.time_of(f.from_step));
         }
-    const std::uint32_t i = control.index_of(f.target);
+    const std::uint32_t i = control.members().index_of(f.target);
     if (i == UINT32_MAX) return;
-    control.revive(i);
+    control.members().revive(i);
     inputs.revive(i, f.target, f.from_step);
 }
 
@@ -60,7 +60,8 @@ bool DdsHost::Impl::all_matched() const {
             // An observer may read the topic's mirror instead (mirror.hpp): its reader is matched there.
             eprosima::fastdds::dds::PublicationMatchedStatus st;
             o.writer->get_publication_matched_status(st);
-            if (st.current_count + host::mirror_readers(o) < control.readers_of(o.port->topic())) return false;
+            if (st.current_count + host::mirror_readers(o) < control.members().readers_of(o.port->topic()))
+                return false;
         }
     return control.clock_matched();
 }

@@ -4,8 +4,6 @@
 
 #include <spdlog/spdlog.h>
 
-#include "framework/executor_access.hpp"
-
 namespace gdnav::runtime::host {
 
 namespace {
@@ -47,16 +45,13 @@ void Faults::restart(Local& l, std::uint64_t k, std::vector<std::unique_ptr<Comp
     const std::string name = l.comp->name();  // a copy: the old member is destroyed below
     l.restarted_at = k;
     std::unique_ptr<Component> fresh = rebuild_(name);
-    for (std::size_t n = 0; n < l.inputs.size(); ++n) {
-        l.inputs[n]->port = fresh->inputs()[n];
-        if (l.inputs[n]->lost) ExecutorAccess::set_lost(*l.inputs[n]->port, true);
-    }
+    for (std::size_t n = 0; n < l.inputs.size(); ++n) l.inputs[n]->rebind(*fresh->inputs()[n]);
     for (std::size_t n = 0; n < l.outputs.size(); ++n) l.outputs[n].port = fresh->outputs()[n];
     for (auto& c : owned)
         if (c.get() == l.comp) c = std::move(fresh), l.comp = c.get();
     l.killed = false;
     spdlog::warn("[{}] step {} t={:.2f} s: restarted by a scheduled fault (created anew)", name, k,
-                 control.timing().ri.time_of(k));
+                 control.run().timing().ri.time_of(k));
     control.send_status(l, msg::STATUS_MODE, "restarted by a scheduled fault");
 }
 
@@ -65,7 +60,7 @@ bool Faults::apply(Local& l, std::uint64_t k, std::vector<std::unique_ptr<Compon
     if (l.restarted_at != k && schedule_.restarts_at(l.comp->name(), k)) restart(l, k, owned, control);
     const std::string& name = l.comp->name();
     if (!schedule_.killed(name, k)) return true;
-    const RunTiming& t = control.timing();
+    const RunTiming& t = control.run().timing();
     if (!l.killed) {
         l.killed = true;
         spdlog::warn("[{}] step {} t={:.2f} s: killed by a scheduled fault", name, k, t.ri.time_of(k));

@@ -1,7 +1,10 @@
 #pragma once
 // The DDS host's implementation: the parts, each owning its state, wired by Impl, which owns the members, the DDS
 // context and the step loop.
-//   host_control.hpp     control plane: phase, member table, Ticks, heartbeats, RunControl, ComponentStatus
+//   host_control.hpp     control plane: the control topics (RunControl, Ticks, ComponentStatus, StepDone),
+//                        composing host_phase.hpp (phase, timing, the clock's Ticks and silence), host_members.hpp
+//                        (member table, dead members) and host_pulse.hpp (heartbeats, the pulse thread)
+//   host_inbox.hpp       the inbox of each input (Channel), the outputs, the local members, the in-process hand-over
 //   host_inputs.hpp      inputs: inboxes by step, lost and revived inputs, faults on inputs, lateness
 //   host_faults.hpp      the fault schedule: live faults, kills, restarts
 //   host_observers.hpp   observers: their readers, the mirrors, skipped steps
@@ -65,7 +68,7 @@ struct DdsHost::Impl final : host::ControlHandler {
     // DDS goes first: its listeners (ours, the outputs' match counts) must outlive its readers and writers.
     // The pulse thread writes on DDS: it stops before.
     ~Impl() override {
-        control.stop_pulse();
+        control.pulse().stop();
         dds.reset();
     }
 

@@ -6,8 +6,19 @@
 
 namespace gdnav::runtime::host {
 
+Channel::Channel(InputBase& in)
+    : port_(&in), ops_(&in.ops()), scratch_(ops_->create()), latest_(ops_->create()) {
+    for (auto& s : slot_) s = ops_->create();
+}
+
+Channel::~Channel() {
+    ops_->destroy(scratch_);
+    ops_->destroy(latest_);
+    for (void* s : slot_) ops_->destroy(s);
+}
+
 long inbox_index(const Channel& ch, std::uint64_t next_step, std::uint64_t s) {
-    const auto lag = static_cast<std::uint64_t>(ch.port->lag());
+    const auto lag = static_cast<std::uint64_t>(ch.port()->lag());
     const std::uint64_t oldest = next_step >= lag ? next_step - lag : 0;
     if (s < oldest) return kOlder;
     if (s >= oldest + kInboxRing) return kTooFar;
@@ -17,9 +28,9 @@ long inbox_index(const Channel& ch, std::uint64_t next_step, std::uint64_t s) {
 std::string rejected_note(const Local& l) {
     std::string note;
     for (const Channel* ch : l.inputs) {
-        if (ch->foreign.total() == 0 && ch->bad_stamp.total() == 0) continue;
-        const std::string entry = ch->port->topic() + ":" + std::to_string(ch->foreign.total()) + ":" +
-                                  std::to_string(ch->bad_stamp.total());
+        if (ch->foreign().total() == 0 && ch->bad_stamp().total() == 0) continue;
+        const std::string entry = ch->port()->topic() + ":" + std::to_string(ch->foreign().total()) + ":" +
+                                  std::to_string(ch->bad_stamp().total());
         if (note.size() + entry.size() + 10 > 1024) break;  // ComponentStatus.message is a string<1024>
         note += (note.empty() ? "rejected " : ",") + entry;
     }
@@ -32,27 +43,22 @@ void route_locally(std::vector<Local>& locals) {
             o.routes.clear();
             for (std::size_t c = 0; c < locals.size(); ++c)
                 for (Channel* ch : locals[c].inputs)
-                    if (ch->port->topic() == o.port->topic()) o.routes.push_back({c, ch});
+                    if (ch->port()->topic() == o.port->topic()) o.routes.push_back({c, ch});
         }
 }
 
 bool hand_over(const Route& r, const Local& consumer, const void* sample, std::uint64_t s) {
     Channel& ch = *r.channel;
-    if (ch.free) {
-        ch.ops->copy(ch.latest, sample);
-        ch.has_latest = true;
+    if (ch.free()) {
+        ch.keep_latest(sample);
         return true;
     }
-    if (!on_stride(*ch.port, s)) return true;  // a step the reader does not read (as the DDS stride filter)
+    if (!on_stride(*ch.port(), s)) return true;  // a step the reader does not read (as the DDS stride filter)
     if (consumer.observer) ch.saw(s);  // only an observer's lost-step test reads it
     const long i = inbox_index(ch, consumer.next_step, s);
     if (i == kOlder) return true;  // no step of the reader needs it (as with a DDS sample)
     if (i == kTooFar) return false;
-    const auto u = static_cast<std::size_t>(i);
-    ch.ops->copy(ch.slot[u], sample);
-    ch.slot_step[u] = s;
-    ch.full[u] = true;
-    ch.bad[u] = false;
+    ch.file_copy(static_cast<std::size_t>(i), sample, s);
     return true;
 }
 

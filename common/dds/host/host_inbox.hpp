@@ -19,42 +19,150 @@
 #include "dds/host/producer_check.hpp"
 #include "dds/host/warn_limit.hpp"
 #include "framework/component.hpp"
+#include "framework/executor_access.hpp"
 #include "framework/faults/input_faults.hpp"
 #include "framework/lateness.hpp"
 #include "framework/lockstep.hpp"
 
 namespace gdnav::runtime::host {
 
-// Inbox of one input port: samples indexed by step (ring), or the latest sample for free-running producers.
-struct Channel {
-    InputBase* port{nullptr};
-    eprosima::fastdds::dds::DataReader* reader{nullptr};
-    const MessageOps* ops{nullptr};
-    void* scratch{nullptr};
-    std::array<void*, kInboxRing> slot{};
-    std::array<std::uint64_t, kInboxRing> slot_step{};
-    std::array<bool, kInboxRing> full{};
-    std::array<bool, kInboxRing> bad{};    // its sample had a non-finite t_s: the input is not available at that step
-    void* latest{nullptr};
-    bool has_latest{false};
-    std::vector<std::uint32_t> producers;  // member indices in the table
-    bool free{false};                      // produced by a free-running member
-    bool lost{false};                      // every producer declared dead
-    Lateness lateness;                     // free channels: how late the samples used were
-    std::unique_ptr<faults::InputFaults> faults;  // scheduled faults on this input (nullptr: none)
-    std::uint64_t lost_until{0};  // its producer rejoined: samples of steps below this one are lost
-    bool revived{false};
-    bool deferred{false};         // an observer's input: its reader is made at CONFIGURE (host_observers.hpp)
-    bool seen{false};             // a sample has arrived (any step)
-    std::uint64_t newest{0};      // the newest step of the samples arrived (an observer's lost-step test)
-    ProducerCheck producer;       // whose samples are used (from the member table)
-    WarnLimit foreign;            // samples dropped: not written by a producer of the topic
-    WarnLimit bad_stamp;          // samples rejected: non-finite t_s, or a step beyond the run or the inbox
-    WarnLimit too_far_local;      // samples of a producer of this process beyond the inbox of a local reader
-    void saw(std::uint64_t s) {
-        if (!seen || s > newest) newest = s;
-        seen = true;
+// Inbox of one input port: samples indexed by step (a ring of kInboxRing slots), or the latest sample for
+// free-running producers. It owns its samples (the scratch sample DDS takes into, the latest, the ring's), and each
+// of its fields has one writer, the member function named for what happens to the input: the member table sets its
+// producers and faults (Inputs::configure), producers die and rejoin (mark_lost, revive), samples are filed into the
+// ring (file_taken from DDS, file_copy from a local producer) or kept as the latest, rejections are counted.
+class Channel {
+public:
+    // The inbox of input `in`: its samples created with the input's message operations.
+    explicit Channel(InputBase& in);
+    ~Channel();
+    Channel(const Channel&) = delete;
+    Channel& operator=(const Channel&) = delete;
+
+    [[nodiscard]] InputBase* port() const { return port_; }
+    [[nodiscard]] const MessageOps& ops() const { return *ops_; }
+    [[nodiscard]] eprosima::fastdds::dds::DataReader* reader() const { return reader_; }
+    // An observer's input: its reader is made at CONFIGURE (host_observers.hpp).
+    [[nodiscard]] bool deferred() const { return deferred_; }
+
+    // Set-up. The member was created anew (a scheduled restart): the inbox serves its new port, lost as before.
+    void rebind(InputBase& fresh) {
+        port_ = &fresh;
+        if (lost_) ExecutorAccess::set_lost(*port_, true);
     }
+    void set_reader(eprosima::fastdds::dds::DataReader* reader) { reader_ = reader; }
+    void defer_reader() { deferred_ = true; }
+
+    // From the member table: the producers of the topic (their table indices and names; announce[i]: producer i is
+    // started by gdnav, producer_check.hpp), and whether they run free (then the input keeps the latest sample).
+    // A free input stays free.
+    void set_producers(std::vector<std::uint32_t> indices, MemberNames names, std::vector<bool> announce,
+                       const Participants* known, bool runs_free) {
+        producers_ = std::move(indices);
+        free_ = free_ || runs_free;
+        producer_.configure(std::move(names), std::move(announce), known);
+    }
+    // The scheduled faults on this input (nullptr: none).
+    void set_faults(std::unique_ptr<faults::InputFaults> f) { faults_ = std::move(f); }
+    [[nodiscard]] const std::vector<std::uint32_t>& producers() const { return producers_; }
+    [[nodiscard]] const ProducerCheck& producer() const { return producer_; }
+    // Whether a sample written by a writer of participant p is a producer's (the check caches its decisions).
+    bool from_producer(const GuidPrefix& p) { return producer_.accepts(p); }
+    [[nodiscard]] bool free() const { return free_; }
+    [[nodiscard]] faults::InputFaults* faults() const { return faults_.get(); }
+
+    // Every producer was declared dead (or none exists): the input is lost, its port too.
+    void mark_lost() {
+        lost_ = true;
+        ExecutorAccess::set_lost(*port_, true);
+    }
+    // A producer rejoined and computes from step from_step: samples of the steps before are lost, the ring is
+    // emptied (its samples are of the time before the producer died), the port is found again at from_step.
+    void revive(std::uint64_t from_step) {
+        lost_ = false;
+        revived_ = true;
+        lost_until_ = from_step;
+        full_.fill(false);
+    }
+    [[nodiscard]] bool lost() const { return lost_; }
+    [[nodiscard]] bool revived() const { return revived_; }
+    [[nodiscard]] std::uint64_t lost_until() const { return lost_until_; }
+
+    // Where DDS takes the next sample into.
+    [[nodiscard]] void* scratch() const { return scratch_; }
+    // A free input's sample (copied): the one its member's steps use from now on.
+    void keep_latest(const void* sample) {
+        ops_->copy(latest_, sample);
+        has_latest_ = true;
+    }
+    [[nodiscard]] bool has_latest() const { return has_latest_; }
+    [[nodiscard]] void* latest() const { return latest_; }
+    // The sample of step s DDS took into scratch() becomes ring slot i's (swapped, not copied); a non-finite t_s
+    // keeps it as bad, so that the step does not wait for it: the input is not available at that step.
+    void file_taken(std::size_t i, std::uint64_t s, bool finite) {
+        std::swap(slot_[i], scratch_);
+        slot_step_[i] = s;
+        full_[i] = true;
+        bad_[i] = !finite;
+    }
+    // A local producer's sample of step s, copied into ring slot i (hand_over below).
+    void file_copy(std::size_t i, const void* sample, std::uint64_t s) {
+        ops_->copy(slot_[i], sample);
+        slot_step_[i] = s;
+        full_[i] = true;
+        bad_[i] = false;
+    }
+    // Whether ring slot i holds the sample of step s; whether that sample is bad (a non-finite t_s); the sample.
+    [[nodiscard]] bool holds(std::size_t i, std::uint64_t s) const { return full_[i] && slot_step_[i] == s; }
+    [[nodiscard]] bool bad(std::size_t i) const { return bad_[i]; }
+    [[nodiscard]] void* slot(std::size_t i) const { return slot_[i]; }
+
+    // A sample of step s arrived (any step; an observer's lost-step test reads it).
+    void saw(std::uint64_t s) {
+        if (!seen_ || s > newest_) newest_ = s;
+        seen_ = true;
+    }
+    // Whether a sample of a step after s has arrived.
+    [[nodiscard]] bool saw_after(std::uint64_t s) const { return seen_ && newest_ > s; }
+
+    // A free input's step used that was `late` steps old (-1: none was there yet).
+    void note_lateness(std::int64_t late) { lateness_.add(late); }
+    [[nodiscard]] const Lateness& lateness() const { return lateness_; }
+
+    // Rejected samples, counted at wall time now_s: the number of them the warning to log now stands for (0: none
+    // to log now, warn_limit.hpp).
+    std::uint64_t reject_foreign(double now_s) { return foreign_.occur(now_s); }
+    std::uint64_t reject_stamp(double now_s) { return bad_stamp_.occur(now_s); }
+    std::uint64_t drop_too_far(double now_s) { return too_far_local_.occur(now_s); }
+    [[nodiscard]] const WarnLimit& foreign() const { return foreign_; }
+    [[nodiscard]] const WarnLimit& bad_stamp() const { return bad_stamp_; }
+    [[nodiscard]] const WarnLimit& too_far_local() const { return too_far_local_; }
+
+private:
+    InputBase* port_;
+    eprosima::fastdds::dds::DataReader* reader_{nullptr};
+    const MessageOps* ops_;
+    void* scratch_;
+    std::array<void*, kInboxRing> slot_{};
+    std::array<std::uint64_t, kInboxRing> slot_step_{};
+    std::array<bool, kInboxRing> full_{};
+    std::array<bool, kInboxRing> bad_{};
+    void* latest_;
+    bool has_latest_{false};
+    std::vector<std::uint32_t> producers_;  // member indices in the table
+    bool free_{false};                      // produced by a free-running member
+    bool lost_{false};                      // every producer declared dead
+    Lateness lateness_;                     // free channels: how late the samples used were
+    std::unique_ptr<faults::InputFaults> faults_;
+    std::uint64_t lost_until_{0};  // its producer rejoined: samples of steps below this one are lost
+    bool revived_{false};
+    bool deferred_{false};
+    bool seen_{false};             // a sample has arrived (any step)
+    std::uint64_t newest_{0};      // the newest step of the samples arrived
+    ProducerCheck producer_;       // whose samples are used (from the member table)
+    WarnLimit foreign_;            // samples dropped: not written by a producer of the topic
+    WarnLimit bad_stamp_;          // samples rejected: non-finite t_s, or a step beyond the run or the inbox
+    WarnLimit too_far_local_;      // samples of a producer of this process beyond the inbox of a local reader
 };
 
 // Where a local member's output goes inside the process: the inboxes of the local members that read its topic.

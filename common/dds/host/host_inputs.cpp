@@ -22,30 +22,16 @@ namespace {
 std::unique_ptr<faults::InputFaults> input_faults(const Channel& ch, const faults::FaultSchedule& schedule,
                                                   const std::vector<msg::MemberInfo>& table, const RunInfo& ri) {
     std::vector<std::string> names;
-    for (auto i : ch.producers) names.push_back(table[i].name().to_string());
-    auto f = std::make_unique<faults::InputFaults>(schedule, ch.port->topic(), names, *ch.ops, ri);
+    for (auto i : ch.producers()) names.push_back(table[i].name().to_string());
+    auto f = std::make_unique<faults::InputFaults>(schedule, ch.port()->topic(), names, ch.ops(), ri);
     if (f->empty()) f.reset();
     return f;
 }
 
 }  // namespace
 
-Inputs::~Inputs() {
-    for (auto& c : channels_) {
-        c->ops->destroy(c->scratch);
-        c->ops->destroy(c->latest);
-        for (void* s : c->slot) c->ops->destroy(s);
-    }
-}
-
 Channel* Inputs::add(InputBase* in) {
-    auto ch = std::make_unique<Channel>();
-    ch->port = in;
-    ch->ops = &in->ops();
-    ch->scratch = ch->ops->create();
-    ch->latest = ch->ops->create();
-    for (auto& s : ch->slot) s = ch->ops->create();
-    channels_.push_back(std::move(ch));
+    channels_.push_back(std::make_unique<Channel>(*in));
     return channels_.back().get();
 }
 
@@ -57,67 +43,66 @@ void Inputs::identify(const Participants* known, std::function<bool(const std::s
 std::vector<DataReader*> Inputs::readers() const {
     std::vector<DataReader*> v;
     for (const auto& c : channels_)
-        if (c->reader != nullptr) v.push_back(c->reader);
+        if (c->reader() != nullptr) v.push_back(c->reader());
     return v;
 }
 
 void Inputs::configure(const Local& l, const std::vector<msg::MemberInfo>& table,
                        const faults::FaultSchedule& schedule, const RunInfo& ri) {
     for (Channel* ch : l.inputs) {
-        ch->producers.clear();
+        std::vector<std::uint32_t> producers;
         MemberNames names;
         std::vector<bool> announce;
+        bool runs_free = free_running_;
         for (std::uint32_t i = 0; i < table.size(); ++i) {
             const auto outs = split_topics(table[i].outputs().to_string());
-            if (std::find(outs.begin(), outs.end(), ch->port->topic()) != outs.end()) {
-                ch->producers.push_back(i);
-                ch->free = ch->free || table[i].free_running();
+            if (std::find(outs.begin(), outs.end(), ch->port()->topic()) != outs.end()) {
+                producers.push_back(i);
+                runs_free = runs_free || table[i].free_running();
                 names.push_back(table[i].name().to_string());
                 announce.push_back(must_announce_ && must_announce_(names.back()));
             }
         }
-        ch->producer.configure(std::move(names), std::move(announce), known_);
-        if (!schedule.empty()) ch->faults = input_faults(*ch, schedule, table, ri);
-        if (ch->producers.empty()) {
+        ch->set_producers(std::move(producers), std::move(names), std::move(announce), known_, runs_free);
+        if (!schedule.empty()) ch->set_faults(input_faults(*ch, schedule, table, ri));
+        if (ch->producers().empty()) {
             spdlog::warn("member '{}': no member of this run produces '{}'; input treated as lost", l.comp->name(),
-                         ch->port->topic());
-            ch->lost = true;
-            ExecutorAccess::set_lost(*ch->port, true);
+                         ch->port()->topic());
+            ch->mark_lost();
         }
-        if (free_running_) ch->free = true;
     }
 }
 
 bool Inputs::matched() const {
     for (const auto& ch : channels_) {
         SubscriptionMatchedStatus st;
-        ch->reader->get_subscription_matched_status(st);
-        if (st.current_count < static_cast<int>(ch->producers.size())) return false;
+        ch->reader()->get_subscription_matched_status(st);
+        if (st.current_count < static_cast<int>(ch->producers().size())) return false;
     }
     return true;
 }
 
 void Inputs::read(Local& l, Channel& ch, const RunInfo& ri) {
-    if (ch.reader == nullptr) return;  // an observer's input before CONFIGURE (host_observers.hpp)
+    if (ch.reader() == nullptr) return;  // an observer's input before CONFIGURE (host_observers.hpp)
+    const MessageOps& ops = ch.ops();
     SampleInfo info;
-    while (ch.reader->take_next_sample(ch.scratch, &info) == ReturnCode_t::RETCODE_OK) {
-        if (!info.valid_data || ch.ops->run_of(ch.scratch) != ri.run_index) continue;
-        if (!ch.producer.configured()) continue;  // before the member table no step can need a sample
+    while (ch.reader()->take_next_sample(ch.scratch(), &info) == ReturnCode_t::RETCODE_OK) {
+        if (!info.valid_data || ops.run_of(ch.scratch()) != ri.run_index) continue;
+        if (!ch.producer().configured()) continue;  // before the member table no step can need a sample
         const GuidPrefix& from = info.sample_identity.writer_guid().guidPrefix;
-        const std::uint64_t s = ch.ops->step_of(ch.scratch);
-        if (!ch.producer.accepts(from)) {
+        const std::uint64_t s = ops.step_of(ch.scratch());
+        if (!ch.from_producer(from)) {
             reject_foreign(l, ch, from, s);
             continue;
         }
-        const double t_s = ch.ops->time_of(ch.scratch);
+        const double t_s = ops.time_of(ch.scratch());
         const bool finite = std::isfinite(t_s);
-        if (s >= ri.steps || (ch.free && !finite)) {
+        if (s >= ri.steps || (ch.free() && !finite)) {
             reject_stamp(l, ch, s, t_s, s >= ri.steps ? "a step beyond the run" : "t_s not finite");
             continue;
         }
-        if (ch.free) {
-            ch.ops->copy(ch.latest, ch.scratch);
-            ch.has_latest = true;
+        if (ch.free()) {
+            ch.keep_latest(ch.scratch());
             continue;
         }
         if (l.observer) ch.saw(s);  // only an observer's lost-step test reads it
@@ -131,81 +116,80 @@ void Inputs::read(Local& l, Channel& ch, const RunInfo& ri) {
             if (!l.killed) reject_stamp(l, ch, s, t_s, "a step too far ahead");  // a killed member reads nothing
             continue;
         }
-        const auto i = static_cast<std::size_t>(at);
-        std::swap(ch.slot[i], ch.scratch);
-        ch.slot_step[i] = s;
-        ch.full[i] = true;
-        ch.bad[i] = !finite;  // kept, so that the step does not wait for it: the input is not available then
+        ch.file_taken(static_cast<std::size_t>(at), s, finite);  // a bad one too: the step does not wait for it
         if (!finite) reject_stamp(l, ch, s, t_s, "t_s not finite");
     }
 }
 
 void Inputs::reject_foreign(const Local& l, Channel& ch, const GuidPrefix& from, std::uint64_t s) {
-    if (const std::uint64_t n = ch.foreign.occur(steady_now_s())) {
+    if (const std::uint64_t n = ch.reject_foreign(steady_now_s())) {
         std::ostringstream who;
         who << from;
         spdlog::warn("member '{}', input '{}': {} sample(s) not written by its producer ({}) dropped, {} in all (the "
                      "last: step {}, from participant {})",
-                     l.comp->name(), ch.port->topic(), n, ch.producer.names(), ch.foreign.total(), s, who.str());
+                     l.comp->name(), ch.port()->topic(), n, ch.producer().names(), ch.foreign().total(), s,
+                     who.str());
     }
 }
 
 void Inputs::reject_stamp(const Local& l, Channel& ch, std::uint64_t s, double t_s, const char* why) {
-    if (const std::uint64_t n = ch.bad_stamp.occur(steady_now_s()))
+    if (const std::uint64_t n = ch.reject_stamp(steady_now_s()))
         spdlog::warn("member '{}', input '{}': {} sample(s) with a bad stamp rejected, {} in all (the last: step {}, "
                      "t_s {}: {}; its step is {})",
-                     l.comp->name(), ch.port->topic(), n, ch.bad_stamp.total(), s, t_s, why, l.next_step);
+                     l.comp->name(), ch.port()->topic(), n, ch.bad_stamp().total(), s, t_s, why, l.next_step);
 }
 
 void Inputs::warn_too_far(const Local& l, Channel& ch, std::uint64_t s) {
     if (l.killed) return;  // a member killed by a fault does not read its inputs
-    if (const std::uint64_t n = ch.too_far_local.occur(steady_now_s()))
+    if (const std::uint64_t n = ch.drop_too_far(steady_now_s()))
         spdlog::warn("input '{}': {} sample(s) too far ahead of step {} dropped, {} in all (the last: step {})",
-                     ch.port->topic(), n, l.next_step, ch.too_far_local.total(), s);
+                     ch.port()->topic(), n, l.next_step, ch.too_far_local().total(), s);
 }
 
 bool Inputs::ready(const Local& l, std::uint64_t k) const {
     for (Channel* ch : l.inputs) {
-        if (ch->lost) {
-            ExecutorAccess::bind(*ch->port, nullptr);
+        InputBase& port = *ch->port();
+        if (ch->lost()) {
+            ExecutorAccess::bind(port, nullptr);
             continue;
         }
-        if (ch->free) {
-            ExecutorAccess::bind(*ch->port, ch->has_latest ? ch->latest : nullptr);
+        if (ch->free()) {
+            ExecutorAccess::bind(port, ch->has_latest() ? ch->latest() : nullptr);
             continue;
         }
-        const std::uint64_t lag = static_cast<std::uint64_t>(ch->port->lag());
+        const std::uint64_t lag = static_cast<std::uint64_t>(port.lag());
         if (k < lag) {
-            ExecutorAccess::bind(*ch->port, nullptr);
+            ExecutorAccess::bind(port, nullptr);
             continue;
         }
         const std::uint64_t need = k - lag;
-        if (!on_stride(*ch->port, need)) {  // not a step it reads: nothing sent, nothing to wait for
-            ExecutorAccess::bind(*ch->port, nullptr);
+        if (!on_stride(port, need)) {  // not a step it reads: nothing sent, nothing to wait for
+            ExecutorAccess::bind(port, nullptr);
             continue;
         }
-        if (need < ch->lost_until) {  // its producer was dead then
-            ExecutorAccess::set_lost(*ch->port, true);
+        if (need < ch->lost_until()) {  // its producer was dead then
+            ExecutorAccess::set_lost(port, true);
             continue;
         }
-        if (ch->revived) ExecutorAccess::set_lost(*ch->port, false);
-        if (ch->faults && ch->faults->producer_killed(need)) {  // nothing was published: do not wait
-            ExecutorAccess::set_lost(*ch->port, true);
+        if (ch->revived()) ExecutorAccess::set_lost(port, false);
+        faults::InputFaults* f = ch->faults();
+        if (f != nullptr && f->producer_killed(need)) {  // nothing was published: do not wait
+            ExecutorAccess::set_lost(port, true);
             continue;
         }
         const std::size_t i = need % kInboxRing;
-        if (!ch->full[i] || ch->slot_step[i] != need) return false;
-        if (ch->bad[i]) {  // rejected (a bad stamp): not available at this step, as a dropped sample
-            ExecutorAccess::bind(*ch->port, nullptr);
+        if (!ch->holds(i, need)) return false;
+        if (ch->bad(i)) {  // rejected (a bad stamp): not available at this step, as a dropped sample
+            ExecutorAccess::bind(port, nullptr);
             continue;
         }
-        if (ch->faults) {
-            const auto d = ch->faults->apply(need, ch->slot[i]);
-            ExecutorAccess::set_lost(*ch->port, d.lost);
-            ExecutorAccess::bind(*ch->port, d.data);
+        if (f != nullptr) {
+            const auto d = f->apply(need, ch->slot(i));
+            ExecutorAccess::set_lost(port, d.lost);
+            ExecutorAccess::bind(port, d.data);
             continue;
         }
-        ExecutorAccess::bind(*ch->port, ch->slot[i]);
+        ExecutorAccess::bind(port, ch->slot(i));
     }
     return true;
 }
@@ -213,60 +197,57 @@ bool Inputs::ready(const Local& l, std::uint64_t k) const {
 void Inputs::record_lateness(const Local& l, std::uint64_t k) const {
     if (free_running_) return;  // a free-running member's own inputs are not a deadline
     for (Channel* ch : l.inputs) {
-        if (!ch->free || ch->lost) continue;
-        if (!ch->has_latest) {
-            ch->lateness.add(-1);
+        if (!ch->free() || ch->lost()) continue;
+        if (!ch->has_latest()) {
+            ch->note_lateness(-1);
             continue;
         }
-        const auto need = static_cast<std::int64_t>(k) - static_cast<std::int64_t>(ch->port->lag());
-        const auto have = static_cast<std::int64_t>(ch->ops->step_of(ch->latest));
-        ch->lateness.add(std::max<std::int64_t>(need - have, 0));  // a newer sample than needed is on time
+        const auto need = static_cast<std::int64_t>(k) - static_cast<std::int64_t>(ch->port()->lag());
+        const auto have = static_cast<std::int64_t>(ch->ops().step_of(ch->latest()));
+        ch->note_lateness(std::max<std::int64_t>(need - have, 0));  // a newer sample than needed is on time
     }
 }
 
 void Inputs::apply_dead_mask(std::uint64_t dead_mask) {
     for (auto& ch : channels_) {
-        if (ch->lost || ch->producers.empty()) continue;
+        if (ch->lost() || ch->producers().empty()) continue;
         bool all_dead = true;
-        for (auto i : ch->producers) all_dead = all_dead && ((dead_mask >> i) & 1u);
+        for (auto i : ch->producers()) all_dead = all_dead && ((dead_mask >> i) & 1u);
         if (all_dead) {
-            ch->lost = true;
-            ExecutorAccess::set_lost(*ch->port, true);
-            spdlog::warn("input '{}' lost: its producer was declared dead", ch->port->topic());
+            ch->mark_lost();
+            spdlog::warn("input '{}' lost: its producer was declared dead", ch->port()->topic());
         }
     }
 }
 
 void Inputs::revive(std::uint32_t i, const std::string& name, std::uint64_t from_step) {
     for (auto& ch : channels_) {
-        if (!ch->lost || std::find(ch->producers.begin(), ch->producers.end(), i) == ch->producers.end()) continue;
-        ch->lost = false;
-        ch->revived = true;
-        ch->lost_until = from_step;
-        ch->full.fill(false);
-        spdlog::info("input '{}': its producer '{}' rejoins at step {}", ch->port->topic(), name, from_step);
+        const auto& producers = ch->producers();
+        if (!ch->lost() || std::find(producers.begin(), producers.end(), i) == producers.end()) continue;
+        ch->revive(from_step);
+        spdlog::info("input '{}': its producer '{}' rejoins at step {}", ch->port()->topic(), name, from_step);
     }
 }
 
 void Inputs::extend_faults(const faults::FaultSchedule& schedule, std::size_t first,
                            const std::vector<msg::MemberInfo>& table, const RunInfo& ri) {
     for (auto& ch : channels_) {
-        if (ch->producers.empty()) continue;
-        if (ch->faults)
-            ch->faults->extend(first);
+        if (ch->producers().empty()) continue;
+        if (ch->faults() != nullptr)
+            ch->faults()->extend(first);
         else
-            ch->faults = input_faults(*ch, schedule, table, ri);
+            ch->set_faults(input_faults(*ch, schedule, table, ri));
     }
 }
 
 void Inputs::report_rejected(const std::vector<Local>& locals) {
     for (const auto& l : locals)
         for (const Channel* ch : l.inputs)
-            if (ch->foreign.total() > 0 || ch->bad_stamp.total() > 0)
+            if (ch->foreign().total() > 0 || ch->bad_stamp().total() > 0)
                 spdlog::warn("member '{}', input '{}': rejected {} sample(s) not written by its producer ({}) and {} "
                              "with a bad stamp",
-                             l.comp->name(), ch->port->topic(), ch->foreign.total(), ch->producer.names(),
-                             ch->bad_stamp.total());
+                             l.comp->name(), ch->port()->topic(), ch->foreign().total(), ch->producer().names(),
+                             ch->bad_stamp().total());
 }
 
 void Inputs::report_lateness(const std::vector<Local>& locals, const std::string& out_dir) const {
@@ -274,7 +255,7 @@ void Inputs::report_lateness(const std::vector<Local>& locals, const std::string
     for (const auto& l : locals) {
         std::vector<std::pair<std::string, const Lateness*>> inputs;
         for (const Channel* ch : l.inputs)
-            if (ch->free) inputs.emplace_back(ch->port->topic(), &ch->lateness);
+            if (ch->free()) inputs.emplace_back(ch->port()->topic(), &ch->lateness());
         runtime::report_lateness(l.comp->name(), inputs, out_dir);
     }
 }

@@ -20,7 +20,6 @@ class Inputs {
 public:
     // free_running: the host's own members run free (their inputs use the latest samples and are not a deadline).
     explicit Inputs(bool free_running) : free_running_(free_running) {}
-    ~Inputs();
     Inputs(const Inputs&) = delete;
     Inputs& operator=(const Inputs&) = delete;
 

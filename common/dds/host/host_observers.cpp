@@ -27,27 +27,26 @@ int mirror_readers(const Output& o) { return o.mirror ? o.mirror_matched->reader
 
 bool step_missed(const Local& l, std::uint64_t k) {
     for (const Channel* ch : l.inputs) {
-        if (ch->lost || ch->free) continue;
-        const auto lag = static_cast<std::uint64_t>(ch->port->lag());
+        if (ch->lost() || ch->free()) continue;
+        const auto lag = static_cast<std::uint64_t>(ch->port()->lag());
         if (k < lag) continue;
         const std::uint64_t need = k - lag;
-        if (!on_stride(*ch->port, need) || need < ch->lost_until) continue;
+        if (!on_stride(*ch->port(), need) || need < ch->lost_until()) continue;
         const std::size_t i = need % kInboxRing;
-        const bool have = ch->full[i] && ch->slot_step[i] == need;
-        if (!have && ch->seen && ch->newest > need) return true;
+        if (!ch->holds(i, need) && ch->saw_after(need)) return true;
     }
     return false;
 }
 
 void catch_up(Local& l, const Channel& ch, std::uint64_t s) {
-    const auto lag = static_cast<std::uint64_t>(ch.port->lag());
+    const auto lag = static_cast<std::uint64_t>(ch.port()->lag());
     const std::uint64_t first = s + lag + 1 - kInboxRing;
     l.skipped += first - l.next_step;
     l.next_step = first;
 }
 
 DataReader* topic_reader(DdsContext& dds, const Channel& ch, bool observer) {
-    return dds.reader(ch.port->topic(), *ch.ops, kDataReaderProfile, stride_of(*ch.port), observer);
+    return dds.reader(ch.port()->topic(), ch.ops(), kDataReaderProfile, stride_of(*ch.port()), observer);
 }
 
 bool Observers::defers(const Local& l, const InputBase& in) const {
@@ -66,14 +65,14 @@ void Observers::make_readers(std::vector<Local>& locals, const std::vector<msg::
     };
     for (auto& l : locals)
         for (Channel* ch : l.inputs) {
-            if (ch->reader != nullptr || !ch->deferred) continue;
+            if (ch->reader() != nullptr || !ch->deferred()) continue;
             std::vector<std::string> names;
-            for (auto i : ch->producers) names.push_back(table[i].name().to_string());
-            const std::string& topic = ch->port->topic();
-            const bool mirror = reads_mirror(stride_of(*ch->port), !mirrors(), names, writes_mirror);
-            ch->reader = mirror ? dds.reader(mirror_topic(topic), *ch->ops, kDataReaderProfile, 1, true)
-                                : topic_reader(dds, *ch, true);
-            ch->reader->set_listener(listener, StatusMask::data_available());
+            for (auto i : ch->producers()) names.push_back(table[i].name().to_string());
+            const std::string& topic = ch->port()->topic();
+            const bool mirror = reads_mirror(stride_of(*ch->port()), !mirrors(), names, writes_mirror);
+            ch->set_reader(mirror ? dds.reader(mirror_topic(topic), ch->ops(), kDataReaderProfile, 1, true)
+                                  : topic_reader(dds, *ch, true));
+            ch->reader()->set_listener(listener, StatusMask::data_available());
             spdlog::debug("member '{}': input '{}' read from {}", l.comp->name(), topic,
                           mirror ? mirror_topic(topic) : "the topic itself");
         }

@@ -11,10 +11,11 @@ namespace gdnav::runtime {
 bool DdsHost::Impl::advance() {
     if (!step_error.empty()) return false;  // leaving the run
     bool any = false;
-    const host::RunTiming& t = control.timing();
+    const host::RunPhase& run = control.run();
+    const host::RunTiming& t = run.timing();
     for (auto& l : locals) {
         if (l.index == UINT32_MAX) continue;
-        while (!l.awaiting_rejoin && control.may_step(l.next_step)) {
+        while (!l.awaiting_rejoin && run.may_step(l.next_step)) {
             const std::uint64_t k = l.next_step;
             if (!faults.empty() && !faults.apply(l, k, owned, control)) {
                 any = true;
@@ -41,7 +42,7 @@ bool DdsHost::Impl::advance() {
 }
 
 void DdsHost::Impl::step(host::Local& l, std::uint64_t k) {
-    const RunInfo& ri = control.timing().ri;
+    const RunInfo& ri = control.run().timing().ri;
     const StepContext ctx{k, ri.time_of(k), ri.dt_s, k + 1 == ri.steps};
     try {
         l.comp->step(ctx);

@@ -21,17 +21,14 @@ public:
 };
 
 struct Inboxes {
-    explicit Inboxes(Lag lag_a) : w(lag_a) {
-        a.port = &w.a_;
-        b.port = &w.b_;
+    explicit Inboxes(Lag lag_a) : w(lag_a), a(w.a_), b(w.b_) {
         l.comp = &w;
         l.observer = true;
         l.inputs = {&a, &b};
     }
-    static void put(host::Channel& ch, std::uint64_t s) {  // as DdsHost::Impl::read_data files a sample
+    static void put(host::Channel& ch, std::uint64_t s) {  // as host::Inputs::read files a sample
         ch.saw(s);
-        ch.slot_step[s % kInboxRing] = s;
-        ch.full[s % kInboxRing] = true;
+        ch.file_taken(s % kInboxRing, s, true);
     }
     Watcher w;
     host::Channel a, b;
@@ -69,6 +66,6 @@ TEST(ObserverInbox, LagStrideAndLostInputsAreRespected) {
 
     Inboxes lost(Lag::Same);
     Inboxes::put(lost.a, 3);
-    lost.b.lost = true;  // its producer was declared dead: not waited for, not missing
+    lost.b.mark_lost();  // its producer was declared dead: not waited for, not missing
     EXPECT_FALSE(host::step_missed(lost.l, 3));
 }
