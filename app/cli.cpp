@@ -9,7 +9,7 @@
 #include "framework/lockstep.hpp"
 #include "framework/topic_types.hpp"
 
-namespace gdnav::app {
+namespace gdnav::cli {
 
 void setup_logging(const std::string& who, const std::string& level) {
     auto logger = spdlog::stderr_color_mt(who);
@@ -18,8 +18,8 @@ void setup_logging(const std::string& who, const std::string& level) {
     spdlog::set_level(spdlog::level::from_str(level));
 }
 
-int cli_main(int argc, char** argv, const runtime::ComponentRegistry& reg, const char* program_name) {
-    runtime::register_gdnav_topics();
+int cli_main(int argc, char** argv, const framework::ComponentRegistry& reg, const char* program_name) {
+    framework::register_gdnav_topics();
     CLI::App app{"gdnav — GNSS-denied fixed-wing UAV simulation and navigation", program_name};
     app.require_subcommand(1);
     app.fallthrough();  // global options (--log-level) may follow the subcommand
@@ -50,7 +50,7 @@ int cli_main(int argc, char** argv, const runtime::ComponentRegistry& reg, const
         std::string where = program_name;
         for (const CLI::App* s : app.get_subcommands()) where += " " + s->get_name();
         spdlog::error("{} (usage: {} --help)", e.what(), where);
-        return runtime::kExitConfig;
+        return framework::kExitConfig;
     }
     try {
         for (auto& [s, r] : subs)
@@ -58,12 +58,12 @@ int cli_main(int argc, char** argv, const runtime::ComponentRegistry& reg, const
     } catch (const config::ConfigError& e) {
         if (!spdlog::get("gdnav")) setup_logging("gdnav", ctx.log_level);
         spdlog::error("{}", e.what());
-        return runtime::kExitConfig;
+        return framework::kExitConfig;
     } catch (const files::WriteError& e) {
         if (!spdlog::get("gdnav")) setup_logging("gdnav", ctx.log_level);
         spdlog::error("{}", e.what());
-        runtime::tell_launcher(e.what());  // a member process: its log may be on the same full disk
-        return runtime::kExitWriteFailed;
+        dds::tell_launcher(e.what());  // a member process: its log may be on the same full disk
+        return framework::kExitWriteFailed;
     } catch (const std::exception& e) {
         if (!spdlog::get("gdnav")) setup_logging("gdnav", ctx.log_level);
         spdlog::error("{}", e.what());
@@ -72,4 +72,4 @@ int cli_main(int argc, char** argv, const runtime::ComponentRegistry& reg, const
     return 0;
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::cli

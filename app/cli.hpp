@@ -2,8 +2,8 @@
 // The gdnav command line (CLI11). Programs register the components they link and call cli_main.
 #include "framework/registry.hpp"
 
-namespace gdnav::app {
+namespace gdnav::cli {
 
-int cli_main(int argc, char** argv, const runtime::ComponentRegistry& reg, const char* program_name);
+int cli_main(int argc, char** argv, const framework::ComponentRegistry& reg, const char* program_name);
 
-}  // namespace gdnav::app
+}  // namespace gdnav::cli

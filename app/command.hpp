@@ -8,10 +8,10 @@
 
 #include "framework/registry.hpp"
 
-namespace gdnav::app {
+namespace gdnav::cli {
 
 struct CliContext {
-    const runtime::ComponentRegistry& registry;
+    const framework::ComponentRegistry& registry;
     std::string log_level{"info"};
     std::string program;  // argv[0] name, for messages
 };
@@ -24,4 +24,4 @@ using CommandFactory = CLI::App* (*)(CLI::App& app, CliContext& ctx, CommandRunn
 // Sets up spdlog for this process ("[time] [who] level: message").
 void setup_logging(const std::string& who, const std::string& level);
 
-}  // namespace gdnav::app
+}  // namespace gdnav::cli

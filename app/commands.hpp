@@ -2,7 +2,7 @@
 // Every gdnav subcommand. To add one: write add_<name>_command in its own file and list it in cli.cpp's table.
 #include "command.hpp"
 
-namespace gdnav::app {
+namespace gdnav::cli {
 
 CLI::App* add_run_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
 CLI::App* add_component_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
@@ -24,6 +24,6 @@ CLI::App* add_host_command(CLI::App& app, CliContext& ctx, CommandRunner& run);
 // scenario (name in config/scenarios or YAML file), constructs and configures every component (each reads and checks
 // its files) and orders the step graph. Throws config::ConfigError, one line naming file and key, for anything
 // invalid; returns the summary line ("<file>: valid; N components, ...").
-std::string validate_scenario(const std::string& scenario, const runtime::ComponentRegistry& reg);
+std::string validate_scenario(const std::string& scenario, const framework::ComponentRegistry& reg);
 
-}  // namespace gdnav::app
+}  // namespace gdnav::cli

@@ -7,12 +7,12 @@
 #include "dds/process/process_exit.hpp"
 #include "launch/fault/fault_request.hpp"
 
-namespace gdnav::app {
+namespace gdnav::cli {
 
 namespace {
 
 struct FaultArgs {
-    FaultRequestSpec spec;
+    launch::fault::FaultRequestSpec spec;
     double duration_s{0.0};
     std::uint64_t steps{0};
     double p{0.0};
@@ -43,16 +43,16 @@ CLI::App* add_fault_command(CLI::App& app, CliContext& ctx, CommandRunner& run) 
     sub->add_option("--timeout", a->spec.timeout_s, "seconds to wait for the clock's answer")->check(CLI::Range(0.1, 3600.0));
     run = [a, sub, &ctx]() -> int {
         setup_logging("gdnav", ctx.log_level);
-        FaultRequestSpec spec = a->spec;
+        launch::fault::FaultRequestSpec spec = a->spec;
         if (sub->count("--for")) spec.duration_s = a->duration_s;
         if (sub->count("--steps")) spec.steps = a->steps;
         if (sub->count("--p")) spec.p = a->p;
-        const std::string entry = fault_entry_yaml(spec);
+        const std::string entry = launch::fault::fault_entry_yaml(spec);
         // A DISPOSE into a running run can abort a member (dds/process/process_exit.hpp): leave without one.
-        runtime::keep_participants_until_exit();
-        runtime::exit_keeping_participants(send_fault_request(spec, entry));
+        dds::keep_participants_until_exit();
+        dds::exit_keeping_participants(launch::fault::send_fault_request(spec, entry));
     };
     return sub;
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::cli

@@ -6,11 +6,11 @@
 #include "io/flight_log/log_export.hpp"
 #include "io/flight_log/log_import.hpp"
 
-namespace gdnav::app {
+namespace gdnav::cli {
 
 CLI::App* add_import_log_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
     auto* sub = app.add_subcommand("import-log", "resample a CSV flight log onto the step grid as replayable records");
-    auto o = std::make_shared<ImportOptions>();
+    auto o = std::make_shared<io::flight_log::ImportOptions>();
     auto steps = std::make_shared<std::uint64_t>(0);
     sub->add_option("csv_dir", o->csv_dir, "folder with imu.csv, mag.csv, air.csv, atm.csv, gnss.csv [alignment.csv]")
         ->required();
@@ -28,7 +28,7 @@ CLI::App* add_import_log_command(CLI::App& app, CliContext& ctx, CommandRunner& 
         setup_logging("gdnav", ctx.log_level);
         if (sub->count("--steps")) o->steps = *steps;
         if (sub->count("--reference")) o->reference = *reference;
-        import_log(*o);
+        io::flight_log::import_log(*o);
         return 0;
     };
     return sub;
@@ -36,7 +36,7 @@ CLI::App* add_import_log_command(CLI::App& app, CliContext& ctx, CommandRunner& 
 
 CLI::App* add_export_log_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
     auto* sub = app.add_subcommand("export-log", "write a recorded run's sensor topics in the CSV flight-log layout");
-    auto o = std::make_shared<ExportOptions>();
+    auto o = std::make_shared<io::flight_log::ExportOptions>();
     auto rates = std::make_shared<std::vector<std::string>>();
     sub->add_option("run_dir", o->run_dir, "a run directory with record/ (gdnav run --record ...)")->required();
     sub->add_option("--out", o->csv_dir, "folder to write the CSV files to")->required();
@@ -57,10 +57,10 @@ CLI::App* add_export_log_command(CLI::App& app, CliContext& ctx, CommandRunner& 
             }
             o->rates_hz[r.substr(0, eq)] = hz;
         }
-        export_log(*o);
+        io::flight_log::export_log(*o);
         return 0;
     };
     return sub;
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::cli

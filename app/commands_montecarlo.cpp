@@ -12,14 +12,14 @@
 #include "launch/batch/batch_report.hpp"
 #include "montecarlo.hpp"
 
-namespace gdnav::app {
+namespace gdnav::cli {
 
 namespace fs = std::filesystem;
-using namespace gdnav::runtime;
+using namespace gdnav::framework;
 
-BatchSpec batch_spec(const McArgs& a, const CliContext& ctx) {
+launch::batch::BatchSpec batch_spec(const McArgs& a, const CliContext& ctx) {
     const ScenarioDocument s = load_scenario_document(a.batch.scenario, a.o);
-    BatchSpec b = a.batch;
+    launch::batch::BatchSpec b = a.batch;
     b.file = s.file;
     b.doc = s.doc;
     add_member_options(b.doc, a.members);
@@ -27,7 +27,7 @@ BatchSpec batch_spec(const McArgs& a, const CliContext& ctx) {
     return b;
 }
 
-int run_batch_shard(const McArgs& a, const CliContext& ctx, const Shard& shard) {
+int run_batch_shard(const McArgs& a, const CliContext& ctx, const launch::batch::Shard& shard) {
     return run_batch_shard(batch_spec(a, ctx), ctx.registry, shard);
 }
 
@@ -41,7 +41,7 @@ int run_montecarlo(const McArgs& a, const CliContext& ctx) {
                                   "rebuild, see docs/montecarlo.md)");
 #endif
     }
-    const Shard shard = a.shard.empty() ? Shard{} : parse_shard(a.shard);
+    const launch::batch::Shard shard = a.shard.empty() ? launch::batch::Shard{} : launch::batch::parse_shard(a.shard);
     int code = run_batch_shard(a, ctx, shard);
     // Interrupted, or stopped on a full disk (a report could not be written either): the batch's last line stands.
     if (code == kExitInterrupted || code == kExitWriteFailed) return code;
@@ -49,9 +49,9 @@ int run_montecarlo(const McArgs& a, const CliContext& ctx) {
         spdlog::info("montecarlo: shard {}/{} done; aggregate the shards with: gdnav report DIR [DIR ...]", shard.index,
                      shard.count);
     } else if (!a.no_report) {
-        ReportOptions ro;
+        launch::batch::ReportOptions ro;
         ro.figures = !a.no_figures;
-        const int rc = write_batch_report({fs::absolute(a.batch.out)}, ro);
+        const int rc = launch::batch::write_batch_report({fs::absolute(a.batch.out)}, ro);
         if (rc != 0) code = code ? code : rc;
     }
     return code;
@@ -91,4 +91,4 @@ CLI::App* add_montecarlo_command(CLI::App& app, CliContext& ctx, CommandRunner& 
     return sub;
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::cli

@@ -13,11 +13,11 @@
 #include "dds/security/security.hpp"
 #include "launch/pki/identity_check.hpp"
 
-namespace gdnav::app {
+namespace gdnav::cli {
 
 namespace {
 
-namespace sec = runtime::security;
+namespace sec = launch::pki;
 
 struct PkiArgs {
     std::string dir;
@@ -45,7 +45,7 @@ CLI::App* add_pki_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
     run = [a, &ctx]() {
         setup_logging("gdnav", ctx.log_level);
         const ScenarioDocument s = load_scenario_document(a->scenario, a->o);
-        const runtime::RunConfig rc = runtime::RunConfig::parse(document_text(s.doc), s.file.string());
+        const framework::RunConfig rc = framework::RunConfig::parse(document_text(s.doc), s.file.string());
         const auto ids = sec::run_identities(rc, ctx.registry, a->members);
         spdlog::info("gdnav pki: making a CA and {} identities in {} (openssl)", ids.size(), a->dir);
         sec::PkiOptions po;
@@ -61,4 +61,4 @@ CLI::App* add_pki_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
     return pki;
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::cli

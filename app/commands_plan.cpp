@@ -10,10 +10,11 @@
 #include "launch/plan/plan_host.hpp"
 #include "scenario_overrides.hpp"
 
-namespace gdnav::app {
+namespace gdnav::cli {
 
 namespace fs = std::filesystem;
-using namespace gdnav::runtime;
+using namespace gdnav::framework;
+using namespace gdnav::launch;
 
 namespace {
 
@@ -55,4 +56,4 @@ CLI::App* add_host_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
     return sub;
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::cli

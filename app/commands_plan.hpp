@@ -7,16 +7,16 @@
 #include "command.hpp"
 #include "launch/run_rewrites.hpp"
 
-namespace gdnav::app {
+namespace gdnav::cli {
 
 struct PlanHostArgs {
     std::string plan;
     std::string host;  // empty: the host with the clock
     std::string out;
     std::uint64_t steps{0};
-    RunRewrites rw;    // --record only
+    launch::RunRewrites rw;  // --record only
 };
 
 int run_plan_host(const PlanHostArgs& a, const CliContext& ctx);
 
-}  // namespace gdnav::app
+}  // namespace gdnav::cli

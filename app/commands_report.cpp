@@ -6,7 +6,7 @@
 #include "commands.hpp"
 #include "launch/batch/batch_report.hpp"
 
-namespace gdnav::app {
+namespace gdnav::cli {
 
 namespace fs = std::filesystem;
 
@@ -25,12 +25,12 @@ CLI::App* add_report_command(CLI::App& app, CliContext& ctx, CommandRunner& run)
     sub->add_flag("--no-review", a->no_review, "no HTML flight review pages (review.html, review/run_*.html)");
     run = [a, &ctx]() {
         setup_logging("gdnav", ctx.log_level);
-        ReportOptions o;
+        launch::batch::ReportOptions o;
         o.figures = !a->no_figures;
         o.review = !a->no_review;
         o.out = a->out;
         std::vector<fs::path> dirs(a->dirs.begin(), a->dirs.end());
-        return write_batch_report(dirs, o);
+        return launch::batch::write_batch_report(dirs, o);
     };
     return sub;
 }
@@ -58,9 +58,9 @@ CLI::App* add_compare_command(CLI::App& app, CliContext& ctx, CommandRunner& run
         if (!a->out.empty()) args.insert(args.end(), {"--out", a->out});
         if (a->no_run_pages) args.emplace_back("--no-run-pages");
         // compare.py prints its own one-line errors (exit 2 for bad input or batches of different missions).
-        return run_report_tool("compare.py", args, false);
+        return launch::batch::run_report_tool("compare.py", args, false);
     };
     return sub;
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::cli

@@ -22,9 +22,11 @@
 #include "dds/process/process_signals.hpp"
 #include "framework/topic_types.hpp"
 
-namespace gdnav::app {
+namespace gdnav::cli {
 
-using namespace gdnav::runtime;
+using namespace gdnav::framework;
+using namespace gdnav::dds;
+using namespace gdnav::launch;
 
 namespace {
 
@@ -306,7 +308,7 @@ CLI::App* add_list_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
 }
 
 CLI::App* add_bench_command(CLI::App& app, CliContext& ctx, CommandRunner& run) {
-    auto a = std::make_shared<BenchOptions>();
+    auto a = std::make_shared<bench::BenchOptions>();
     auto* sub = app.add_subcommand("bench", "measure steps/s and real-time factor per layout, and model costs");
     sub->add_option("--scenario", a->scenario, "scenario name or YAML file");
     sub->add_option("--steps", a->steps, "steps per measurement");
@@ -320,12 +322,12 @@ CLI::App* add_bench_command(CLI::App& app, CliContext& ctx, CommandRunner& run) 
     run = [a, &ctx]() {
         setup_logging("gdnav", ctx.log_level);
         a->log_level = ctx.log_level;
-        const BenchFigures fig = measure_bench(*a, ctx.registry);
-        std::fputs(bench_tables(fig, *a).c_str(), stdout);
-        if (!a->json.empty()) write_bench_json(fig, a->json);
+        const bench::BenchFigures fig = bench::measure_bench(*a, ctx.registry);
+        std::fputs(bench::bench_tables(fig, *a).c_str(), stdout);
+        if (!a->json.empty()) bench::write_bench_json(fig, a->json);
         return 0;
     };
     return sub;
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::cli

@@ -11,10 +11,10 @@
 #include "framework/run_config.hpp"
 #include "scenario_overrides.hpp"
 
-namespace gdnav::app {
+namespace gdnav::cli {
 
 namespace fs = std::filesystem;
-using namespace gdnav::runtime;
+using namespace gdnav::framework;
 
 ScenarioDocument load_scenario_document(const std::string& name_or_file, const scenario::Overrides& o) {
     ScenarioDocument s;
@@ -91,4 +91,4 @@ CLI::App* add_scenario_command(CLI::App& app, CliContext& ctx, CommandRunner& ru
     return sub;
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::cli

@@ -8,7 +8,7 @@
 
 #include "scenario_overrides.hpp"
 
-namespace gdnav::app {
+namespace gdnav::cli {
 
 struct ScenarioDocument {
     std::filesystem::path file;  // absolute path of the scenario file
@@ -19,4 +19,4 @@ ScenarioDocument load_scenario_document(const std::string& name_or_file, const s
 // The document as YAML text (what gdnav run reads back).
 std::string document_text(const YAML::Node& doc);
 
-}  // namespace gdnav::app
+}  // namespace gdnav::cli

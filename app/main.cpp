@@ -3,7 +3,7 @@
 #include "register_components.hpp"
 
 int main(int argc, char** argv) {
-    gdnav::runtime::ComponentRegistry reg;
-    gdnav::app::register_all_components(reg);
-    return gdnav::app::cli_main(argc, argv, reg, "gdnav");
+    gdnav::framework::ComponentRegistry reg;
+    gdnav::cli::register_all_components(reg);
+    return gdnav::cli::cli_main(argc, argv, reg, "gdnav");
 }

@@ -10,12 +10,12 @@
 #include "command.hpp"
 #include "scenario_overrides.hpp"
 
-namespace gdnav::app {
+namespace gdnav::cli {
 
 struct McArgs {
     // The options that are the batch's as they are (scenario, runs, first, seed, seed_given, jobs, layout, domain,
     // out, steps); batch_spec() adds the scenario document and the log level.
-    BatchSpec batch{.scenario = "1"};
+    launch::batch::BatchSpec batch{.scenario = "1"};
     scenario::Overrides o;
     std::vector<std::string> members;  // --member NAME=SPEC (run.members of every run)
     bool no_report{false};
@@ -25,9 +25,9 @@ struct McArgs {
 };
 
 // The batch of these options: the scenario document with the overrides applied, and this process's log level.
-BatchSpec batch_spec(const McArgs& a, const CliContext& ctx);
+launch::batch::BatchSpec batch_spec(const McArgs& a, const CliContext& ctx);
 // run_batch_shard (batch_runner.hpp) of these options. No report (see write_batch_report).
-int run_batch_shard(const McArgs& a, const CliContext& ctx, const Shard& s);
+int run_batch_shard(const McArgs& a, const CliContext& ctx, const launch::batch::Shard& s);
 
 // The whole command: the batch or its --shard, then (whole batch only, unless --no-report) the report.
 int run_montecarlo(const McArgs& a, const CliContext& ctx);
@@ -38,4 +38,4 @@ int run_montecarlo(const McArgs& a, const CliContext& ctx);
 int run_montecarlo_mpi(const McArgs& a, const CliContext& ctx);
 #endif
 
-}  // namespace gdnav::app
+}  // namespace gdnav::cli

@@ -17,7 +17,7 @@
 #include "montecarlo.hpp"
 #include "framework/lockstep.hpp"
 
-namespace gdnav::app {
+namespace gdnav::cli {
 
 namespace fs = std::filesystem;
 
@@ -27,9 +27,9 @@ namespace {
 std::string pack_metrics(const fs::path& dir, const std::vector<std::uint64_t>& runs) {
     std::string out;
     for (const std::uint64_t i : runs) {
-        const fs::path f = dir / "runs" / run_dir_name(i) / "metrics.yaml";
+        const fs::path f = dir / "runs" / launch::batch::run_dir_name(i) / "metrics.yaml";
         if (!metrics::run_record_complete(f)) continue;
-        const std::string text = read_text(f);
+        const std::string text = launch::batch::read_text(f);
         out += std::to_string(i) + " " + std::to_string(text.size()) + "\n" + text;
     }
     return out;
@@ -48,10 +48,10 @@ std::size_t unpack_metrics(const fs::path& dir, const std::string& packed) {
         head >> index >> size;
         const std::string text = packed.substr(eol + 1, size);
         pos = eol + 1 + size;
-        const fs::path f = dir / "runs" / run_dir_name(index) / "metrics.yaml";
-        if (fs::exists(f) && read_text(f) == text) continue;  // shared file system: already there
+        const fs::path f = dir / "runs" / launch::batch::run_dir_name(index) / "metrics.yaml";
+        if (fs::exists(f) && launch::batch::read_text(f) == text) continue;  // shared file system: already there
         fs::create_directories(f.parent_path());
-        write_file_atomic(f, text);
+        launch::batch::write_file_atomic(f, text);
         ++written;
     }
     return written;
@@ -82,16 +82,16 @@ int run_montecarlo_mpi(const McArgs& a, const CliContext& ctx) {
     int rank = 0, size = 1;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     MPI_Comm_size(MPI_COMM_WORLD, &size);
-    const Shard shard{static_cast<std::uint64_t>(rank) + 1, static_cast<std::uint64_t>(size)};
+    const launch::batch::Shard shard{static_cast<std::uint64_t>(rank) + 1, static_cast<std::uint64_t>(size)};
     int code = 0;
     std::string packed;
     const fs::path dir = fs::absolute(a.batch.out);
     try {
         code = run_batch_shard(a, ctx, shard);
-        packed = pack_metrics(dir, shard_runs(a.batch.first, a.batch.runs, shard));
+        packed = pack_metrics(dir, launch::batch::shard_runs(a.batch.first, a.batch.runs, shard));
     } catch (const config::ConfigError& e) {
         spdlog::error("rank {}: {}", rank, e.what());
-        code = runtime::kExitConfig;
+        code = framework::kExitConfig;
     } catch (const std::exception& e) {
         spdlog::error("rank {}: {}", rank, e.what());
         code = 1;
@@ -104,10 +104,10 @@ int run_montecarlo_mpi(const McArgs& a, const CliContext& ctx) {
         const std::size_t sent = unpack_metrics(dir, all);
         if (sent > 0) spdlog::info("montecarlo --mpi: wrote {} runs' metrics.yaml sent by other ranks", sent);
         spdlog::info("montecarlo --mpi: {} ranks done (worst exit code {})", size, worst);
-        if (!a.no_report && worst != runtime::kExitConfig && worst != runtime::kExitInterrupted) {
-            ReportOptions ro;
+        if (!a.no_report && worst != framework::kExitConfig && worst != framework::kExitInterrupted) {
+            launch::batch::ReportOptions ro;
             ro.figures = !a.no_figures;
-            const int rc = write_batch_report({dir}, ro);
+            const int rc = launch::batch::write_batch_report({dir}, ro);
             if (rc != 0 && code == 0) code = rc;
         }
     }
@@ -115,4 +115,4 @@ int run_montecarlo_mpi(const McArgs& a, const CliContext& ctx) {
     return code;
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::cli

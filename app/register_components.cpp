@@ -15,10 +15,10 @@
 #include "client/embed/python_member.hpp"
 #endif
 
-namespace gdnav::app {
+namespace gdnav::cli {
 
-void register_all_components(runtime::ComponentRegistry& reg) {
-    recorder::register_recorder(reg);
+void register_all_components(framework::ComponentRegistry& reg) {
+    gdnav::recorder::register_recorder(reg);
     replay::register_replay(reg);
     live::register_live(reg);
     physics::register_flight_physics(reg);
@@ -30,8 +30,8 @@ void register_all_components(runtime::ComponentRegistry& reg) {
     nav_recorder::register_nav_recorder(reg);
     scenario::register_paper_scenarios();
 #ifdef GDNAV_PYTHON_EMBED
-    pyembed::register_python_member(reg);  // run.members: {NAME: {python: ...}} (docs/python.md)
+    client::embed::register_python_member(reg);  // run.members: {NAME: {python: ...}} (docs/python.md)
 #endif
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::cli

@@ -1,7 +1,7 @@
 #pragma once
 #include "framework/registry.hpp"
 
-namespace gdnav::app {
+namespace gdnav::cli {
 // Registers every production component linked into gdnav.
-void register_all_components(runtime::ComponentRegistry& reg);
-}  // namespace gdnav::app
+void register_all_components(framework::ComponentRegistry& reg);
+}  // namespace gdnav::cli

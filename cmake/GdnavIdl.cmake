@@ -2,8 +2,8 @@
 # Runs fastddsgen at build time (never committed) into ${CMAKE_CURRENT_BINARY_DIR}/<target>_gen and builds a
 # static library of the generated types. `-replace` is needed: without it fastddsgen silently keeps stale files.
 # GEN_REPLACE: fastddsgen reads a copy of each file with <text> replaced (e.g. a member name fastddsgen refuses),
-# while the IDL text compiled in for recordings (idl_text::<base>()) stays the file as written. Only for changes that
-# leave the CDR encoding alone (member names are not on the wire).
+# while the IDL text compiled in for recordings (msg::idl_text::<base>()) stays the file as written. Only for changes
+# that leave the CDR encoding alone (member names are not on the wire).
 function(gdnav_idl_library target)
   cmake_parse_arguments(ARG "" "" "GEN_REPLACE" ${ARGN})
   set(outdir ${CMAKE_CURRENT_BINARY_DIR}/${target}_gen)
@@ -37,13 +37,14 @@ function(gdnav_idl_library target)
       VERBATIM)
     list(APPEND sources ${outdir}/${base}.cxx ${outdir}/${base}PubSubTypes.cxx)
     # The IDL text itself, for self-describing recordings (MCAP schemas, omgidl): std::string_view
-    # gdnav::idl_text::<base>() in <base>IdlText.cxx, regenerated when the IDL changes (configure-time dependency).
+    # gdnav::msg::idl_text::<base>() in <base>IdlText.cxx (declared in idl/msgs/idl_text.hpp), regenerated when the
+    # IDL changes (configure-time dependency).
     set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${abs})
     file(READ ${abs} _hex HEX)
     string(REGEX REPLACE "([0-9a-f][0-9a-f])" "0x\\1," _hex "${_hex}")
     file(WRITE ${outdir}/${base}IdlText.cxx.tmp
       "// Generated from ${abs} by cmake/GdnavIdl.cmake: the IDL text (a byte array: no string-length limit).\n"
-      "#include <string_view>\nnamespace gdnav::idl_text {\nnamespace { const unsigned char kText[] = {${_hex}}; }\n"
+      "#include <string_view>\nnamespace gdnav::msg::idl_text {\nnamespace { const unsigned char kText[] = {${_hex}}; }\n"
       "std::string_view ${base}() { return {reinterpret_cast<const char*>(kText), sizeof(kText)}; }\n}\n")
     configure_file(${outdir}/${base}IdlText.cxx.tmp ${outdir}/${base}IdlText.cxx COPYONLY)
     list(APPEND sources ${outdir}/${base}IdlText.cxx)

@@ -237,7 +237,7 @@ GeneratedScenario generate_paper_scenario(int scenario, const YAML::Node& doc_in
 
 void register_paper_scenarios() {
     for (int s : {1, 2}) {
-        runtime::register_scenario_generator(
+        framework::register_scenario_generator(
             "paper_scenario" + std::to_string(s),
             [s](const YAML::Node& doc, std::uint64_t seed, std::uint64_t run, const std::string& origin) {
                 return generate_paper_scenario(s, doc, seed, run, origin).doc;

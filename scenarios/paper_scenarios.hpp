@@ -78,7 +78,7 @@ GeneratedScenario generate_paper_scenario(int scenario, const YAML::Node& doc, s
 // Human-readable account of the draws (gdnav scenario).
 std::string describe(const PaperDraws& d);
 
-// Registers paper_scenario1 and paper_scenario2 with runtime::register_scenario_generator.
+// Registers paper_scenario1 and paper_scenario2 with framework::register_scenario_generator.
 void register_paper_scenarios();
 
 }  // namespace gdnav::scenario

@@ -16,7 +16,7 @@
 #include "dds/filters/status_filter.hpp"
 #include "dds/filters/stride_filter.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 using namespace eprosima::fastdds::dds;
 
@@ -72,7 +72,7 @@ DdsContext::~DdsContext() {
     if (!participants_kept()) DomainParticipantFactory::get_instance()->delete_participant(participant_);
 }
 
-Topic* DdsContext::topic(const std::string& name, const MessageOps& ops) {
+Topic* DdsContext::topic(const std::string& name, const msg::MessageOps& ops) {
     auto it = topics_.find(name);
     if (it != topics_.end()) return it->second;
     TypeSupport ts(ops.make_type());
@@ -84,25 +84,25 @@ Topic* DdsContext::topic(const std::string& name, const MessageOps& ops) {
     return t;
 }
 
-DataWriter* DdsContext::writer(const std::string& name, const MessageOps& ops, const char* profile) {
+DataWriter* DdsContext::writer(const std::string& name, const msg::MessageOps& ops, const char* profile) {
     DataWriter* w = publisher_->create_datawriter_with_profile(topic(name, ops), profile);
     if (!w) throw std::runtime_error("cannot create DDS writer for " + name + " with profile '" + profile + "'");
     return w;
 }
 
-DataReader* DdsContext::reader(const std::string& name, const MessageOps& ops, const char* profile,
+DataReader* DdsContext::reader(const std::string& name, const msg::MessageOps& ops, const char* profile,
                                std::uint64_t stride, bool best_effort) {
     if (stride <= 1) return create_reader(topic(name, ops), name, profile, best_effort);
     return filtered_reader(name, ops, profile, "/every_" + std::to_string(stride) + "_steps", "step % stride",
                            std::to_string(stride), kStrideFilterClass, best_effort);
 }
 
-DataReader* DdsContext::status_reader(const std::string& name, const MessageOps& ops, const char* profile,
+DataReader* DdsContext::status_reader(const std::string& name, const msg::MessageOps& ops, const char* profile,
                                       const std::string& member) {
     return filtered_reader(name, ops, profile, "/of_" + member, "member = %0", member, kStatusFilterClass);
 }
 
-DataReader* DdsContext::filtered_reader(const std::string& name, const MessageOps& ops, const char* profile,
+DataReader* DdsContext::filtered_reader(const std::string& name, const msg::MessageOps& ops, const char* profile,
                                         const std::string& suffix, const char* expression,
                                         const std::string& parameter, const char* filter_class,
                                         bool best_effort) {
@@ -131,4 +131,4 @@ DataReader* DdsContext::create_reader(TopicDescription* description, const std::
     return r;
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

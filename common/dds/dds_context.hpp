@@ -16,10 +16,11 @@
 #include <fastdds/dds/subscriber/Subscriber.hpp>
 #include <fastdds/dds/topic/Topic.hpp>
 
+#include "dds/compat.hpp"
 #include "dds/participants.hpp"
 #include "msgs/message_ops.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 // Profile names defined in config/dds/gdnav_profiles.xml.
 inline constexpr const char* kParticipantProfile = "gdnav_participant";
@@ -41,23 +42,24 @@ public:
     DdsContext(const DdsContext&) = delete;
     DdsContext& operator=(const DdsContext&) = delete;
 
-    eprosima::fastdds::dds::DataWriter* writer(const std::string& topic, const MessageOps& ops, const char* profile);
+    eprosima::fastdds::dds::DataWriter* writer(const std::string& topic, const msg::MessageOps& ops,
+                                               const char* profile);
     // stride > 1: the reader gets only the samples of steps k % stride == 0, filtered by the writers where they can
     // (dds/filters/stride_filter.hpp). best_effort: the profile's QoS with BEST_EFFORT reliability (an observer's
     // inputs, Component::observer(): no acknowledgements or resends, a lost sample stays lost).
-    eprosima::fastdds::dds::DataReader* reader(const std::string& topic, const MessageOps& ops, const char* profile,
-                                               std::uint64_t stride = 1, bool best_effort = false);
+    eprosima::fastdds::dds::DataReader* reader(const std::string& topic, const msg::MessageOps& ops,
+                                               const char* profile, std::uint64_t stride = 1, bool best_effort = false);
     // A reader of `topic` (ComponentStatus) that gets only the statuses of `member` (dds/filters/status_filter.hpp).
-    eprosima::fastdds::dds::DataReader* status_reader(const std::string& topic, const MessageOps& ops,
+    eprosima::fastdds::dds::DataReader* status_reader(const std::string& topic, const msg::MessageOps& ops,
                                                       const char* profile, const std::string& member);
     [[nodiscard]] eprosima::fastdds::dds::DomainParticipant* participant() const { return participant_; }
     // The participants of the domain and the members they announced (this one's own included).
     [[nodiscard]] const Participants& participants() const { return participants_; }
 
 private:
-    eprosima::fastdds::dds::Topic* topic(const std::string& name, const MessageOps& ops);
+    eprosima::fastdds::dds::Topic* topic(const std::string& name, const msg::MessageOps& ops);
     // A reader of a ContentFilteredTopic of `name` (named name + suffix + a counter) with one filter parameter.
-    eprosima::fastdds::dds::DataReader* filtered_reader(const std::string& name, const MessageOps& ops,
+    eprosima::fastdds::dds::DataReader* filtered_reader(const std::string& name, const msg::MessageOps& ops,
                                                         const char* profile, const std::string& suffix,
                                                         const char* expression, const std::string& parameter,
                                                         const char* filter_class, bool best_effort = false);
@@ -72,4 +74,4 @@ private:
     unsigned filtered_topics_{0};  // content-filtered topics need names unique in the participant
 };
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

@@ -4,7 +4,7 @@
 
 #include <spdlog/spdlog.h>
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 std::uint64_t draw_run_token() {
     std::random_device rd;
@@ -29,4 +29,4 @@ void ForeignRuns::report() const {
                  count_, sources_.size());
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

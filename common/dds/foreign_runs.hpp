@@ -6,7 +6,9 @@
 #include <set>
 #include <string>
 
-namespace gdnav::runtime {
+#include "dds/compat.hpp"
+
+namespace gdnav::dds {
 
 // A fresh run token from the operating system's entropy (std::random_device), never 0. It identifies the run on the
 // wire only: it must not reach a recorded topic, a digest or metrics.yaml (runs stay bit-reproducible).
@@ -31,4 +33,4 @@ private:
     std::uint64_t count_{0};
 };
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

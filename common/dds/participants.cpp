@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 namespace {
 constexpr const char* kPrefix = "gdnav-members=";
@@ -62,4 +62,4 @@ bool Participants::announces(const std::string& name) const {
     });
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

@@ -16,7 +16,9 @@
 #include <fastdds/dds/domain/DomainParticipantListener.hpp>
 #include <fastdds/rtps/common/GuidPrefix_t.hpp>
 
-namespace gdnav::runtime {
+#include "dds/compat.hpp"
+
+namespace gdnav::dds {
 
 using GuidPrefix = eprosima::fastrtps::rtps::GuidPrefix_t;
 using MemberNames = std::vector<std::string>;
@@ -51,4 +53,4 @@ private:
     std::atomic<std::uint64_t> generation_{0};
 };
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

@@ -8,7 +8,7 @@
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
 #include <fmt/format.h>
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 std::uint32_t udp_receive_buffer_asked(const eprosima::fastdds::dds::DomainParticipant& p) {
     std::uint32_t asked = 0;
@@ -33,4 +33,4 @@ std::string receive_buffer_shortfall(std::uint32_t asked, std::uint64_t cap) {
                        cap, asked, asked);
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

@@ -6,11 +6,13 @@
 #include <filesystem>
 #include <string>
 
+#include "dds/compat.hpp"
+
 namespace eprosima::fastdds::dds {
 class DomainParticipant;
 }
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 // The largest receiveBufferSize of the participant's UDPv4 transports (0: none asked for, the system default).
 [[nodiscard]] std::uint32_t udp_receive_buffer_asked(const eprosima::fastdds::dds::DomainParticipant& p);
@@ -22,4 +24,4 @@ namespace gdnav::runtime {
 // One line for the run's log when the cap is below what the participant asked for, else empty.
 [[nodiscard]] std::string receive_buffer_shortfall(std::uint32_t asked, std::uint64_t cap);
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

@@ -3,17 +3,18 @@
 // operations, and an output whose message type is chosen at run time.
 #include <string>
 
+#include "framework/compat.hpp"
 #include "framework/component.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::framework {
 
 // The message operations of a registered topic (framework/topic_types.hpp), or std::invalid_argument naming the
 // known topics.
-const MessageOps& require_topic(const std::string& topic);
+const msg::MessageOps& require_topic(const std::string& topic);
 
 class AnyOutput final : public OutputBase {
 public:
-    AnyOutput(Component& owner, std::string topic, const MessageOps& ops)
+    AnyOutput(Component& owner, std::string topic, const msg::MessageOps& ops)
         : OutputBase(owner, std::move(topic), ops), value_(ops.create()) {}
     ~AnyOutput() override { ops().destroy(value_); }
     AnyOutput(const AnyOutput&) = delete;
@@ -24,4 +25,4 @@ private:
     void* value_;
 };
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

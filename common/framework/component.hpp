@@ -21,10 +21,11 @@
 #include <vector>
 
 #include "config/config.hpp"
+#include "framework/compat.hpp"
 #include "random/stream.hpp"
 #include "msgs/message_ops.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::framework {
 
 enum class Lag : std::uint8_t { Same = 0, Previous = 1 };
 
@@ -50,21 +51,21 @@ class Component;
 
 class PortBase {
 public:
-    PortBase(Component& owner, std::string topic, const MessageOps& ops);
+    PortBase(Component& owner, std::string topic, const msg::MessageOps& ops);
     PortBase(const PortBase&) = delete;
     PortBase& operator=(const PortBase&) = delete;
     virtual ~PortBase() = default;
     [[nodiscard]] const std::string& topic() const { return topic_; }
-    [[nodiscard]] const MessageOps& ops() const { return *ops_; }
+    [[nodiscard]] const msg::MessageOps& ops() const { return *ops_; }
 
 private:
     std::string topic_;
-    const MessageOps* ops_;
+    const msg::MessageOps* ops_;
 };
 
 class InputBase : public PortBase {
 public:
-    InputBase(Component& owner, std::string topic, Lag lag, const MessageOps& ops);
+    InputBase(Component& owner, std::string topic, Lag lag, const msg::MessageOps& ops);
     [[nodiscard]] Lag lag() const { return lag_; }
     [[nodiscard]] bool available() const { return data_ != nullptr; }
     [[nodiscard]] bool lost() const { return lost_; }
@@ -92,7 +93,7 @@ private:
 
 class OutputBase : public PortBase {
 public:
-    OutputBase(Component& owner, std::string topic, const MessageOps& ops);
+    OutputBase(Component& owner, std::string topic, const msg::MessageOps& ops);
     [[nodiscard]] virtual void* data() = 0;
 };
 
@@ -100,7 +101,7 @@ template <class T>
 class Input final : public InputBase {
 public:
     Input(Component& owner, std::string topic, Lag lag = Lag::Same)
-        : InputBase(owner, std::move(topic), lag, message_ops<T>()) {}
+        : InputBase(owner, std::move(topic), lag, msg::message_ops<T>()) {}
     [[nodiscard]] const T& get() const { return *static_cast<const T*>(data_); }
     [[nodiscard]] const T* ptr() const { return static_cast<const T*>(data_); }
 };
@@ -108,7 +109,7 @@ public:
 template <class T>
 class Output final : public OutputBase {
 public:
-    Output(Component& owner, std::string topic) : OutputBase(owner, std::move(topic), message_ops<T>()) {}
+    Output(Component& owner, std::string topic) : OutputBase(owner, std::move(topic), msg::message_ops<T>()) {}
     [[nodiscard]] T& value() { return value_; }
     [[nodiscard]] const T& value() const { return value_; }
     [[nodiscard]] void* data() override { return &value_; }
@@ -157,4 +158,4 @@ private:
     std::vector<std::string> status_;
 };
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

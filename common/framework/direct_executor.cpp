@@ -11,7 +11,7 @@
 #include "framework/stride_policy.hpp"
 #include "framework/graph.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::framework {
 
 DirectExecutor::DirectExecutor(std::vector<std::unique_ptr<Component>> components, const RunInfo& run)
     : owned_(std::move(components)), run_(run) {
@@ -173,4 +173,4 @@ void DirectExecutor::finish(bool completed) {
     if (first) std::rethrow_exception(first);
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

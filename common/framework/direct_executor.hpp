@@ -9,11 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "framework/compat.hpp"
 #include "framework/component.hpp"
 #include "framework/faults/fault_schedule.hpp"
 #include "framework/faults/input_faults.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::framework {
 
 class DirectExecutor {
 public:
@@ -63,4 +64,4 @@ private:
     std::vector<std::int64_t> profile_ns_;
 };
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

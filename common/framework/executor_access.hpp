@@ -7,9 +7,10 @@
 #include <utility>
 #include <vector>
 
+#include "framework/compat.hpp"
 #include "framework/component.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::framework {
 
 struct ExecutorAccess {
     // The input holds DATA (the sample of the step; nullptr: none this step).
@@ -22,4 +23,4 @@ struct ExecutorAccess {
     static void publish_status(Component& c, std::string message) { c.status_.push_back(std::move(message)); }
 };
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

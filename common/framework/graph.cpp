@@ -4,7 +4,7 @@
 #include <set>
 #include <stdexcept>
 
-namespace gdnav::runtime {
+namespace gdnav::framework {
 
 Graph build_graph(const std::vector<Component*>& components) {
     Graph g;
@@ -105,4 +105,4 @@ std::vector<std::string> output_topics(const Component& c) {
     return v;
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

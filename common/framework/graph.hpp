@@ -5,9 +5,10 @@
 #include <string>
 #include <vector>
 
+#include "framework/compat.hpp"
 #include "framework/component.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::framework {
 
 struct Graph {
     std::map<std::string, OutputBase*> producer;  // topic -> output port (within the given set)
@@ -27,4 +28,4 @@ std::vector<std::string> split_topics(const std::string& csv);
 std::vector<std::string> input_topics(const Component& c);
 std::vector<std::string> output_topics(const Component& c);
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

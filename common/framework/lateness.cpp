@@ -5,7 +5,7 @@
 
 #include <spdlog/spdlog.h>
 
-namespace gdnav::runtime {
+namespace gdnav::framework {
 
 void Lateness::add(std::int64_t late) {
     per_step.push_back(late);
@@ -46,4 +46,4 @@ void report_lateness(const std::string& member, const std::vector<std::pair<std:
       << yaml;
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

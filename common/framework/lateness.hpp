@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
-namespace gdnav::runtime {
+#include "framework/compat.hpp"
+
+namespace gdnav::framework {
 
 struct Lateness {
     std::uint64_t used{0};     // steps at which a sample was available
@@ -26,4 +28,4 @@ struct Lateness {
 void report_lateness(const std::string& member, const std::vector<std::pair<std::string, const Lateness*>>& inputs,
                      const std::filesystem::path& out_dir);
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

@@ -2,7 +2,7 @@
 
 #include <unistd.h>
 
-namespace gdnav::runtime {
+namespace gdnav::framework {
 
 std::string host_identity() {
     char buf[256] = {};
@@ -10,4 +10,4 @@ std::string host_identity() {
     return std::string(buf) + ":" + std::to_string(getpid());
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

@@ -16,7 +16,9 @@
 #include <cstdint>
 #include <string>
 
-namespace gdnav::runtime {
+#include "framework/compat.hpp"
+
+namespace gdnav::framework {
 
 inline constexpr double kHeartbeatPeriodS = 0.1;
 inline constexpr double kWaitSliceS = 0.02;  // longest blocking wait in a loop (signals, heartbeats, timeouts)
@@ -56,4 +58,4 @@ inline double steady_now_s() {
 
 std::string host_identity();  // hostname:pid
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

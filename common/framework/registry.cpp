@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-namespace gdnav::runtime {
+namespace gdnav::framework {
 
 void ComponentRegistry::add(const std::string& type, std::string description, Factory f) {
     entries_[type] = Entry{std::move(description), std::move(f)};
@@ -24,4 +24,4 @@ const std::string& ComponentRegistry::description(const std::string& type) const
     return entries_.at(type).description;
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

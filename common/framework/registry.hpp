@@ -7,9 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "framework/compat.hpp"
 #include "framework/component.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::framework {
 
 class ComponentRegistry {
 public:
@@ -34,4 +35,4 @@ ComponentRegistry::Factory make_factory() {
     return [](const std::string& name) { return std::make_unique<C>(name); };
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

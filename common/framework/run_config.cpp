@@ -16,7 +16,7 @@
 #define GDNAV_SOURCE_CONFIG_DIR "config"
 #endif
 
-namespace gdnav::runtime {
+namespace gdnav::framework {
 
 using config::Config;
 using config::ConfigError;
@@ -280,4 +280,4 @@ std::string RunConfig::to_yaml() const {
     return std::string(em.c_str()) + "\n";
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

@@ -36,11 +36,12 @@
 #include <vector>
 
 #include "config/config.hpp"
+#include "framework/compat.hpp"
 #include "framework/component.hpp"
 #include "framework/faults/fault_schedule.hpp"
 #include "framework/registry.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::framework {
 
 // Where config/ lives: $GDNAV_CONFIG_DIR, else the source tree's config/ (compiled in).
 std::filesystem::path config_dir();
@@ -115,4 +116,4 @@ private:
     YAML::Node root_;
 };
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

@@ -6,7 +6,7 @@
 #include "framework/lockstep.hpp"
 #include "framework/run_config.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::framework {
 
 using config::Config;
 using config::ConfigError;
@@ -187,4 +187,4 @@ const StartedMember* find_started(const std::vector<StartedMember>& members, con
     return nullptr;
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

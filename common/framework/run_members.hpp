@@ -21,8 +21,9 @@
 #include <yaml-cpp/yaml.h>
 
 #include "config/config.hpp"
+#include "framework/compat.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::framework {
 
 inline constexpr const char* kPythonMemberType = "python_member";
 
@@ -70,4 +71,4 @@ std::vector<StartedMember> started_members(const RunConfig& rc);
 // The entry named `name`, or nullptr.
 const StartedMember* find_started(const std::vector<StartedMember>& members, const std::string& name);
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

@@ -2,7 +2,7 @@
 
 #include <map>
 
-namespace gdnav::runtime {
+namespace gdnav::framework {
 
 namespace {
 std::map<std::string, ScenarioGenerator>& table() {
@@ -58,4 +58,4 @@ std::vector<std::string> scenario_generator_names() {
     return v;
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

@@ -15,7 +15,9 @@
 
 #include <yaml-cpp/yaml.h>
 
-namespace gdnav::runtime {
+#include "framework/compat.hpp"
+
+namespace gdnav::framework {
 
 // Returns the completed document. Throws config::ConfigError on bad generator options (name the key and origin).
 using ScenarioGenerator =
@@ -32,4 +34,4 @@ std::vector<std::string> scenario_generator_names();
 // run. A Null node when the document names no generator (nothing is drawn). Throws as the generator does.
 YAML::Node drawn_scenario(const YAML::Node& doc, std::uint64_t seed, std::uint64_t run_index, const std::string& origin);
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

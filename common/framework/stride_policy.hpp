@@ -14,9 +14,10 @@
 // (docs/notes/runtime-measurements.md, "Which strides pay").
 #include <cstdint>
 
+#include "framework/compat.hpp"
 #include "framework/component.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::framework {
 
 inline constexpr std::uint64_t kMinStride = 4;
 inline constexpr std::uint64_t kMaxStride = 10;
@@ -36,4 +37,4 @@ inline constexpr std::uint64_t kMaxStride = 10;
     return s == 1 || sample_step % s == 0;
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::framework

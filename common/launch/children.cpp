@@ -12,7 +12,7 @@
 
 #include "framework/lockstep.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::launch {
 
 namespace fs = std::filesystem;
 
@@ -97,8 +97,8 @@ void signal_all(std::vector<Child>& cs, int sig) {
 }
 
 bool wait_all(std::vector<Child>& cs, double seconds, const std::function<void(Child&)>& on_exit) {
-    const double end = steady_now_s() + seconds;
-    while (any_running(cs) && steady_now_s() < end) {
+    const double end = framework::steady_now_s() + seconds;
+    while (any_running(cs) && framework::steady_now_s() < end) {
         reap(cs, on_exit);
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
@@ -106,4 +106,4 @@ bool wait_all(std::vector<Child>& cs, double seconds, const std::function<void(C
     return !any_running(cs);
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::launch

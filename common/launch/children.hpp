@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace gdnav::runtime {
+namespace gdnav::launch {
 
 struct Child {
     std::string name;
@@ -40,4 +40,4 @@ void signal_all(std::vector<Child>& cs, int sig);
 // Waits up to `seconds` for all children; returns true when none is left.
 bool wait_all(std::vector<Child>& cs, double seconds, const std::function<void(Child&)>& on_exit);
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::launch

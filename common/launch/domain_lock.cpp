@@ -11,7 +11,7 @@
 
 #include <spdlog/spdlog.h>
 
-namespace gdnav::runtime {
+namespace gdnav::launch {
 
 std::filesystem::path DomainLock::dir() {
     const char* env = std::getenv("GDNAV_DOMAIN_LOCKS");
@@ -52,18 +52,18 @@ int DomainLock::lock_free_domain() {
                              "); give --domain");
 }
 
-void choose_domain(RunConfig& rc, DomainLock& lock) {
+void choose_domain(framework::RunConfig& rc, DomainLock& lock) {
     if (rc.domain_given) {
         (void)lock.try_lock(rc.domain_id);
         return;
     }
     rc.domain_id = lock.lock_free_domain();
-    RunOverrides o;
+    framework::RunOverrides o;
     o.domain_id = rc.domain_id;
     const std::string faults_origin = rc.faults_origin;  // errors keep naming the file the faults came from
-    rc = RunConfig::parse(rc.to_yaml(), rc.origin, o);
+    rc = framework::RunConfig::parse(rc.to_yaml(), rc.origin, o);
     rc.faults_origin = faults_origin;
     spdlog::info("DDS domain {} (no other run of this host uses it; --domain chooses one)", rc.domain_id);
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::launch

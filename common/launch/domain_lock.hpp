@@ -6,7 +6,7 @@
 
 #include "framework/run_config.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::launch {
 
 class DomainLock {
 public:
@@ -34,6 +34,6 @@ private:
 
 // A run without a given domain takes the lowest one that no run of this host holds, and says so; a given domain is
 // locked too when it is free, so that runs without --domain keep off it.
-void choose_domain(RunConfig& rc, DomainLock& lock);
+void choose_domain(framework::RunConfig& rc, DomainLock& lock);
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::launch

@@ -29,14 +29,14 @@
 #include "launch/run_outcome.hpp"
 #include "launch/shm_cleanup.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::launch {
 
 namespace fs = std::filesystem;
 
 namespace {
 
 // Options that cannot work together, before anything else.
-void check_layout(const RunConfig& rc, const LaunchOptions& opt) {
+void check_layout(const framework::RunConfig& rc, const LaunchOptions& opt) {
     if (opt.layout != "direct" && opt.layout != "composed" && opt.layout != "distributed")
         throw config::ConfigError("unknown layout '" + opt.layout + "' (allowed: direct, composed, distributed)");
     check_started_members(rc, opt.layout);
@@ -50,14 +50,14 @@ void check_layout(const RunConfig& rc, const LaunchOptions& opt) {
 // as processes.yaml does for a started member's program: which code flew is part of the result. (A missing file is
 // left to the member's own one-line error.) Without such a member the text is to_yaml()'s as it is; with one, it is
 // parsed and re-emitted, and scalars keep their text, so the other keys read the same.
-std::string run_yaml_text(const RunConfig& rc) {
+std::string run_yaml_text(const framework::RunConfig& rc) {
     std::string text = rc.to_yaml();
     if (std::none_of(rc.members.begin(), rc.members.end(),
-                     [](const MemberSpec& m) { return m.type == kPythonMemberType; }))
+                     [](const framework::MemberSpec& m) { return m.type == framework::kPythonMemberType; }))
         return text;
     YAML::Node doc = YAML::Load(text);
-    for (const MemberSpec& m : rc.members) {
-        if (m.type != kPythonMemberType) continue;
+    for (const framework::MemberSpec& m : rc.members) {
+        if (m.type != framework::kPythonMemberType) continue;
         YAML::Node c = doc["components"][m.name];
         if (!c["file"]) continue;
         const fs::path file = c["file"].as<std::string>();
@@ -69,7 +69,7 @@ std::string run_yaml_text(const RunConfig& rc) {
     return std::string(em.c_str()) + "\n";
 }
 
-fs::path write_run_yaml(const RunConfig& rc, const LaunchOptions& opt) {
+fs::path write_run_yaml(const framework::RunConfig& rc, const LaunchOptions& opt) {
     fs::create_directories(rc.out_dir);
     // The closing line reads the clock's summary of this run: none of an earlier run in this folder may stand in.
     if (opt.start_clock) fs::remove(fs::path(rc.out_dir) / "clock_summary.yaml");
@@ -81,25 +81,25 @@ fs::path write_run_yaml(const RunConfig& rc, const LaunchOptions& opt) {
 }
 
 // Every identity this run starts must be valid before any process starts (one clear error otherwise).
-void check_security(const RunConfig& rc, const LaunchOptions& opt) {
+void check_security(const framework::RunConfig& rc, const LaunchOptions& opt) {
     if (!rc.security_dir.empty() && opt.layout == "distributed")
         throw config::ConfigError(
             "config error: " + rc.origin + ": key 'run.security': not with --layout distributed: Fast DDS 2.9.1 "
             "(Debian 12) leaves some secure endpoints unmatched when more than about 3 participants start together "
             "(measured in docs/deployment.md); use --layout composed (the clock and one process)");
     if (rc.security_dir.empty()) return;
-    std::vector<std::string> identities{security::kClockIdentity};
+    std::vector<std::string> identities{dds::security::kClockIdentity};
     std::vector<std::string> hosted;
     for (const auto& m : rc.members)
         if (!rc.is_external(m.name)) {
             if (opt.layout == "distributed") identities.push_back(m.name);
             hosted.push_back(m.name);
         }
-    if (opt.layout == "composed" && !hosted.empty()) identities.push_back(security::process_identity(hosted));
+    if (opt.layout == "composed" && !hosted.empty()) identities.push_back(dds::security::process_identity(hosted));
     if (opt.start_clock)  // the members gdnav starts join under their own name
-        for (const auto& m : started_members(rc))
+        for (const auto& m : framework::started_members(rc))
             if (!m.in_process()) identities.push_back(m.name);
-    for (const auto& id : identities) security::check_identity(rc.security_dir, id);
+    for (const auto& id : identities) pki::check_identity(rc.security_dir, id);
     spdlog::info("DDS Security on: {} identities from {} checked (authentication, access control, AES-GCM)",
                  identities.size(), rc.security_dir.string());
 }
@@ -126,19 +126,20 @@ fs::path member_exe(const LaunchOptions& opt) {
 
 // Starts the clock and waits until it owns the domain: it heard no other clock (docs/runtime.md, "DDS domains").
 // False when it refused (its one line says why), ended, or the wait was interrupted: no member may start then.
-bool start_clock(std::vector<Child>& children, const RunConfig& rc, const LaunchOptions& opt,
+bool start_clock(std::vector<Child>& children, const framework::RunConfig& rc, const LaunchOptions& opt,
                  const fs::path& run_yaml) {
     int fds[2];
     if (pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error("pipe failed");
-    children.push_back({kClockName, spawn(member_exe(opt), {"clock", "--ready-fd", std::to_string(fds[1]), "--config",
-                                                            run_yaml.string(), "--log-level", opt.log_level},
-                                          fds[1])});
+    children.push_back({framework::kClockName, spawn(member_exe(opt),
+                                                     {"clock", "--ready-fd", std::to_string(fds[1]), "--config",
+                                                      run_yaml.string(), "--log-level", opt.log_level},
+                                                     fds[1])});
     close(fds[1]);
-    const double end = steady_now_s() + kClaimLongestS + rc.startup_timeout_s;
+    const double end = framework::steady_now_s() + framework::kClaimLongestS + rc.startup_timeout_s;
     char c = 0;
     ssize_t n = -1;
     pollfd p{fds[0], POLLIN, 0};
-    while (n < 0 && !stop_requested() && steady_now_s() < end)
+    while (n < 0 && !dds::stop_requested() && framework::steady_now_s() < end)
         if (poll(&p, 1, 50) > 0) n = read(fds[0], &c, 1);
     close(fds[0]);
     if (n == 1) return true;
@@ -155,11 +156,11 @@ int clock_refused(std::vector<Child>& children) {
         signal_all(children, SIGKILL);
         reap(children, [](Child&) {});
     }
-    return stop_requested() ? kExitInterrupted : code == 0 ? 1 : code;
+    return dds::stop_requested() ? framework::kExitInterrupted : code == 0 ? 1 : code;
 }
 
 // The members: all (not external), or this host's slice of a plan.
-std::vector<Child> start_members(const RunConfig& rc, const LaunchOptions& opt, const fs::path& run_yaml) {
+std::vector<Child> start_members(const framework::RunConfig& rc, const LaunchOptions& opt, const fs::path& run_yaml) {
     const fs::path exe = member_exe(opt);
     const std::vector<std::string> common{"--config", run_yaml.string(), "--log-level", opt.log_level};
     auto args = [&](std::vector<std::string> a) {
@@ -186,7 +187,7 @@ std::vector<Child> start_members(const RunConfig& rc, const LaunchOptions& opt, 
 // Starts the process members after the others, says which external members gdnav does not start, and writes
 // processes.yaml (a process member's entry with its command and hash).
 void start_process_members(std::vector<Child>& children, const std::vector<MemberProcess>& procs,
-                           const RunConfig& rc) {
+                           const framework::RunConfig& rc) {
     const std::size_t others = children.size();
     std::vector<std::string> records;
     for (const auto& m : procs) {
@@ -196,9 +197,9 @@ void start_process_members(std::vector<Child>& children, const std::vector<Membe
                      join(m.argv, " "), m.cwd.string(), m.name);
     }
     std::vector<std::string> outside;
-    const std::vector<StartedMember> given = started_members(rc);
+    const std::vector<framework::StartedMember> given = framework::started_members(rc);
     for (const auto& e : rc.external)
-        if (!find_started(given, e)) outside.push_back(e);
+        if (!framework::find_started(given, e)) outside.push_back(e);
     if (!outside.empty())
         spdlog::info("external member(s) {} are not started by gdnav: start them on DDS domain {} with run id {} "
                      "(e.g. `--domain {} --run {}`); waiting up to {:.0f} s",
@@ -225,17 +226,19 @@ bool is_process_member(const std::vector<MemberProcess>& procs, const std::strin
 
 // Waits for the children: Ctrl-C stops them all; once the clock is gone the members get member_timeout_s to end.
 // A process member (procs) that fails stops the run.
-Outcome supervise(std::vector<Child>& children, const RunConfig& rc, const std::vector<MemberProcess>& procs) {
+Outcome supervise(std::vector<Child>& children, const framework::RunConfig& rc,
+                  const std::vector<MemberProcess>& procs) {
     Outcome out;
     auto on_exit = [&](Child& c) {
         const bool ok = WIFEXITED(c.status) && WEXITSTATUS(c.status) == 0;
-        const bool clock = c.name == kClockName;
+        const bool clock = c.name == framework::kClockName;
         if (clock) out.clock_code = WIFEXITED(c.status) ? WEXITSTATUS(c.status) : 128 + WTERMSIG(c.status);
         if (ok) return;
-        out.write_failed = out.write_failed || (WIFEXITED(c.status) && WEXITSTATUS(c.status) == kExitWriteFailed);
+        out.write_failed =
+            out.write_failed || (WIFEXITED(c.status) && WEXITSTATUS(c.status) == framework::kExitWriteFailed);
         // A member that ended with 3 only followed the clock's ABORT, and the clock's own exit code is on the
         // closing line: neither is a cause of its own (logged at debug level).
-        const bool follows_clock = WIFEXITED(c.status) && (clock || WEXITSTATUS(c.status) == kExitAborted);
+        const bool follows_clock = WIFEXITED(c.status) && (clock || WEXITSTATUS(c.status) == framework::kExitAborted);
         if (follows_clock) {
             spdlog::debug("process '{}' (pid {}) ended: {}", c.name, c.pid, describe_status(c.status));
             return;
@@ -247,7 +250,7 @@ Outcome supervise(std::vector<Child>& children, const RunConfig& rc, const std::
     };
     while (any_running(children)) {
         reap(children, on_exit);
-        if (stop_requested() && !out.interrupted) {
+        if (dds::stop_requested() && !out.interrupted) {
             out.interrupted = true;
             spdlog::warn("interrupted: stopping all processes of the run");
             signal_all(children, SIGTERM);
@@ -282,11 +285,11 @@ void stop_services(std::vector<Child>& services) {
 }
 
 // The run's exit code from how its processes ended, with the closing log line.
-int exit_code(const Outcome& out, const RunConfig& rc, const LaunchOptions& opt,
+int exit_code(const Outcome& out, const framework::RunConfig& rc, const LaunchOptions& opt,
               const std::vector<MemberProcess>& procs) {
     if (out.interrupted) {
         spdlog::error("run interrupted");
-        return kExitInterrupted;
+        return framework::kExitInterrupted;
     }
     if (!opt.start_clock) {  // a plan host without the clock: its own processes decide
         if (!out.failures.empty()) {
@@ -294,7 +297,7 @@ int exit_code(const Outcome& out, const RunConfig& rc, const LaunchOptions& opt,
             return 1;
         }
         spdlog::info("host slice completed; results in {}", rc.out_dir);
-        return kExitOk;
+        return framework::kExitOk;
     }
     ClockSummary summary = read_clock_summary(fs::path(rc.out_dir) / "clock_summary.yaml");
     // No reason in the summary (the clock could not write it, or a member failed after a completed run): the first
@@ -309,9 +312,9 @@ int exit_code(const Outcome& out, const RunConfig& rc, const LaunchOptions& opt,
                       rc.out_dir);
         return 1;
     }
-    if (out.clock_code != kExitOk || out.write_failed) {
+    if (out.clock_code != framework::kExitOk || out.write_failed) {
         // A file that could not be written is the run's cause whatever the clock made of it (docs/runtime.md).
-        const int code = out.write_failed ? kExitWriteFailed : out.clock_code > 0 ? out.clock_code : 1;
+        const int code = out.write_failed ? framework::kExitWriteFailed : out.clock_code > 0 ? out.clock_code : 1;
         spdlog::error("{}", failed_run_line(code, summary, out.failures));
         return code;
     }
@@ -320,12 +323,12 @@ int exit_code(const Outcome& out, const RunConfig& rc, const LaunchOptions& opt,
         spdlog::info("{}", line);
     else
         spdlog::warn("{}", line);
-    return kExitOk;
+    return framework::kExitOk;
 }
 
 }  // namespace
 
-int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& opt) {
+int launch_run(framework::RunConfig rc, const framework::ComponentRegistry& reg, const LaunchOptions& opt) {
     check_layout(rc, opt);
     // Validate everything before anything starts: build (construct + configure) every component.
     (void)rc.build(reg);
@@ -345,9 +348,9 @@ int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& 
         opt.start_clock ? resolve_member_processes(rc) : std::vector<MemberProcess>{};
 
     const std::time_t started = std::time(nullptr) - 1;
-    install_stop_signal_handlers();
+    dds::install_stop_signal_handlers();
     std::vector<Child> services = start_services(opt);
-    CausePipe causes;  // before the clock and the members start: they inherit its write end
+    dds::CausePipe causes;  // before the clock and the members start: they inherit its write end
     std::vector<Child> children;
     if (opt.start_clock && !start_clock(children, rc, opt, run_yaml)) {
         const int code = clock_refused(children);
@@ -364,4 +367,4 @@ int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& 
     return exit_code(out, rc, opt, procs);
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::launch

@@ -14,7 +14,7 @@
 #include "framework/registry.hpp"
 #include "framework/run_config.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::launch {
 
 struct LaunchOptions {
     std::string layout{"distributed"};  // direct | composed | distributed
@@ -30,9 +30,10 @@ struct LaunchOptions {
 };
 
 // Returns the exit code of the run (0 = completed).
-int launch_run(RunConfig rc, const ComponentRegistry& reg, const LaunchOptions& opt);
+int launch_run(framework::RunConfig rc, const framework::ComponentRegistry& reg, const LaunchOptions& opt);
 
 // Runs the direct layout in this process; returns steps/s through `steps_per_s` when not null.
-int run_direct(const RunConfig& rc, const ComponentRegistry& reg, bool progress, double* steps_per_s = nullptr);
+int run_direct(const framework::RunConfig& rc, const framework::ComponentRegistry& reg, bool progress,
+               double* steps_per_s = nullptr);
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::launch

@@ -18,7 +18,7 @@
 
 extern char** environ;
 
-namespace gdnav::runtime {
+namespace gdnav::launch {
 
 namespace fs = std::filesystem;
 using config::ConfigError;
@@ -32,14 +32,14 @@ std::string replace_all(std::string s, const std::string& from, const std::strin
 }
 
 // {domain}, {run}, {out}, {security} of the run.
-std::string substitute(const std::string& s, const RunConfig& rc) {
+std::string substitute(const std::string& s, const framework::RunConfig& rc) {
     std::string r = replace_all(s, "{domain}", std::to_string(rc.domain_id));
     r = replace_all(r, "{run}", std::to_string(rc.info.run_index));
     r = replace_all(r, "{out}", fs::absolute(rc.out_dir).lexically_normal().string());
     return replace_all(r, "{security}", rc.security_dir.string());
 }
 
-[[noreturn]] void fail(const RunConfig& rc, const std::string& key, const std::string& what) {
+[[noreturn]] void fail(const framework::RunConfig& rc, const std::string& key, const std::string& what) {
     throw ConfigError("config error: " + rc.origin + ": key 'run.members." + key + "': " + what);
 }
 
@@ -82,17 +82,17 @@ fs::path file_run(const fs::path& exe, const std::vector<std::string>& argv, con
 
 }  // namespace
 
-void check_started_members(const RunConfig& rc, const std::string& layout) {
-    for (const auto& m : started_members(rc)) {
+void check_started_members(const framework::RunConfig& rc, const std::string& layout) {
+    for (const auto& m : framework::started_members(rc)) {
         if (layout == "direct")
             fail(rc, m.name, "a process member needs the lockstep clock; use --layout composed or distributed (the "
                              "direct layout has no transport)");
     }
 }
 
-std::vector<MemberProcess> resolve_member_processes(const RunConfig& rc) {
+std::vector<MemberProcess> resolve_member_processes(const framework::RunConfig& rc) {
     std::vector<MemberProcess> out;
-    for (const auto& s : started_members(rc)) {
+    for (const auto& s : framework::started_members(rc)) {
         if (s.in_process()) continue;
         MemberProcess m;
         m.name = s.name;
@@ -172,4 +172,4 @@ std::string sha256_of_file(const fs::path& file) {
     return s;
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::launch

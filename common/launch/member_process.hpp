@@ -13,7 +13,7 @@
 #include "framework/run_config.hpp"
 #include "framework/run_members.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::launch {
 
 struct MemberProcess {
     std::string name;
@@ -27,11 +27,11 @@ struct MemberProcess {
 
 // Refuses what this layout cannot run (a process member in `direct`; the in-process Python form, not built in this
 // version), one line naming the key. Nothing else is checked here.
-void check_started_members(const RunConfig& rc, const std::string& layout);
+void check_started_members(const framework::RunConfig& rc, const std::string& layout);
 
 // Every process member of rc with rc.domain_id, run index, out_dir and security substituted. Throws ConfigError
 // naming run.members.NAME when a working directory or the executable is missing.
-std::vector<MemberProcess> resolve_member_processes(const RunConfig& rc);
+std::vector<MemberProcess> resolve_member_processes(const framework::RunConfig& rc);
 
 // Starts the member (same process group as the launcher, ended with it) with stdout and stderr appended to
 // <out_dir>/logs/NAME.log.
@@ -43,4 +43,4 @@ std::string member_process_record(const MemberProcess& m, pid_t pid);
 // Lowercase hex SHA-256 of a file's bytes (OpenSSL); throws std::runtime_error when it cannot be read.
 std::string sha256_of_file(const std::filesystem::path& file);
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::launch

@@ -2,7 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-namespace gdnav::runtime {
+namespace gdnav::launch {
 
 ClockSummary read_clock_summary(const std::filesystem::path& file) {
     ClockSummary s;
@@ -48,4 +48,4 @@ std::string completed_run_line(const ClockSummary& summary, const std::vector<st
     return "run completed" + (without.empty() ? std::string() : " without: " + without) + "; results in " + out_dir;
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::launch

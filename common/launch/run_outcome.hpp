@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace gdnav::runtime {
+namespace gdnav::launch {
 
 struct DeadMember {
     std::string name;
@@ -34,4 +34,4 @@ std::string failed_run_line(int code, const ClockSummary& summary, const std::ve
 std::string completed_run_line(const ClockSummary& summary, const std::vector<std::string>& failures,
                                const std::string& out_dir);
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::launch

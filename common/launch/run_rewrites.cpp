@@ -13,10 +13,10 @@
 #include "framework/topic_types.hpp"
 #include "io/viewer/viewer_channels.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch {
 
 namespace fs = std::filesystem;
-using runtime::RunConfig;
+using framework::RunConfig;
 
 namespace {
 
@@ -42,7 +42,7 @@ const std::vector<std::string> kDefaultRecorded{"gdnav/ImuSample", "gdnav/MagSam
 // others or alone) = kDefaultRecorded.
 std::vector<std::string> resolve_topics(const std::vector<std::string>& names, const std::string& option,
                                         bool allow_all) {
-    if (allow_all && names.size() == 1 && names.front() == "all") return runtime::known_topics();
+    if (allow_all && names.size() == 1 && names.front() == "all") return framework::known_topics();
     std::vector<std::string> out;
     for (const auto& n : names) {
         if (n == "all") fail(option, allow_all ? "'all' must be given alone" : "'all' is not allowed here");
@@ -51,8 +51,8 @@ std::vector<std::string> resolve_topics(const std::vector<std::string>& names, c
                 if (std::find(out.begin(), out.end(), t) == out.end()) out.push_back(t);
             continue;
         }
-        const std::string t = recorder::resolve_topic(n);
-        if (t.empty()) fail(option, "unknown topic '" + n + "' (known: " + recorder::known_topics_list() + ")");
+        const std::string t = io::recording::resolve_topic(n);
+        if (t.empty()) fail(option, "unknown topic '" + n + "' (known: " + io::recording::known_topics_list() + ")");
         if (std::find(out.begin(), out.end(), t) == out.end()) out.push_back(t);
     }
     if (out.empty()) fail(option, "no topic given");
@@ -100,7 +100,7 @@ void add_recorder(YAML::Node comps, const std::vector<std::string>& all_names) {
     comps[kRecorderName] = r;
 }
 
-void add_replay(YAML::Node root, const RunConfig& rc, const RunRewrites& rw, const runtime::ComponentRegistry& reg) {
+void add_replay(YAML::Node root, const RunConfig& rc, const RunRewrites& rw, const framework::ComponentRegistry& reg) {
     if (rw.replay_topics.empty()) fail("--topics", "--replay needs the topics to replay (--topics ImuSample,MagSample,...)");
     const std::vector<std::string> topics = resolve_topics(rw.replay_topics, "--topics", false);
     std::error_code ec;
@@ -109,14 +109,15 @@ void add_replay(YAML::Node root, const RunConfig& rc, const RunRewrites& rw, con
     if (!fs::is_directory(run_dir, ec)) fail("--replay", "'" + rw.replay_dir + "' is not a directory");
     std::vector<std::string> recorded;
     try {
-        recorded = recorder::recorded_topics(record_dir);
+        recorded = io::recording::recorded_topics(record_dir);
     } catch (const std::runtime_error& e) {
         fail("--replay", e.what());
     }
     for (const auto& t : topics)
         if (std::find(recorded.begin(), recorded.end(), t) == recorded.end())
-            fail("--replay", recorder::recording_file(record_dir).string() + ": no record of " + t + " (recorded there: " +
-                                 (recorded.empty() ? std::string("nothing") : join(recorded)) + ")");
+            fail("--replay", io::recording::recording_file(record_dir).string() + ": no record of " + t +
+                                 " (recorded there: " + (recorded.empty() ? std::string("nothing") : join(recorded)) +
+                                 ")");
     if (fs::weakly_canonical(fs::absolute(rc.out_dir), ec) == fs::weakly_canonical(run_dir, ec))
         fail("--out", "the output directory is the replayed run directory " + run_dir.string() +
                           " (its records would be overwritten): give another --out");
@@ -166,7 +167,7 @@ void add_replay(YAML::Node root, const RunConfig& rc, const RunRewrites& rw, con
 constexpr const char* kLiveName = "live";
 
 // --live [PORT] (+ --live-bind, --live-decimation, --live-topics): a `live` member (components/live/live_bridge.hpp).
-void add_live(YAML::Node comps, const RunConfig& rc, const RunRewrites& rw, const runtime::ComponentRegistry& reg) {
+void add_live(YAML::Node comps, const RunConfig& rc, const RunRewrites& rw, const framework::ComponentRegistry& reg) {
     if (!rw.live) {
         for (const auto& [given, opt] : {std::pair{!rw.live_bind.empty(), "--live-bind"},
                                          std::pair{rw.live_decimation > 0, "--live-decimation"},
@@ -193,9 +194,9 @@ void add_live(YAML::Node comps, const RunConfig& rc, const RunRewrites& rw, cons
         std::set<std::string> written;
         for (const auto& c : rc.build(reg))
             for (const auto* o : c->outputs()) written.insert(o->topic());
-        for (const auto& t : runtime::known_topics())
+        for (const auto& t : framework::known_topics())
             if (written.count(t)) names.push_back(t);
-        const auto& inputs = viewer::viewer_input_topics();
+        const auto& inputs = io::viewer::viewer_input_topics();
         viewer = std::all_of(inputs.begin(), inputs.end(), [&](const std::string& t) { return written.count(t) > 0; });
         if (names.empty()) fail("--live", "no member of the run writes a data topic (give --live-topics)");
         spdlog::info("--live: member '{}' streams {}{}", kLiveName, join(names), viewer ? " and the viewer channels" : "");
@@ -208,7 +209,7 @@ void add_live(YAML::Node comps, const RunConfig& rc, const RunRewrites& rw, cons
 
 }  // namespace
 
-RunConfig apply_run_rewrites(const RunConfig& rc, const RunRewrites& rw, const runtime::ComponentRegistry& reg) {
+RunConfig apply_run_rewrites(const RunConfig& rc, const RunRewrites& rw, const framework::ComponentRegistry& reg) {
     if (rw.replay_dir.empty() && !rw.replay_topics.empty()) fail("--topics", "needs --replay RUN_DIR");
     YAML::Node root = YAML::Load(rc.to_yaml());
     if (!rw.record.empty()) add_recorder(root["components"], rw.record);
@@ -220,4 +221,4 @@ RunConfig apply_run_rewrites(const RunConfig& rc, const RunRewrites& rw, const r
     return RunConfig::parse(std::string(em.c_str()) + "\n", rc.origin);
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch

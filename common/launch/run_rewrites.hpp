@@ -14,7 +14,7 @@
 #include "framework/registry.hpp"
 #include "framework/run_config.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch {
 
 struct RunRewrites {
     std::vector<std::string> record;         // topic names (short "ImuSample" or full "gdnav/ImuSample"), or "all"
@@ -34,7 +34,7 @@ struct RunRewrites {
 };
 
 // Applies the rewrites to `rc` (already resolved: generator run, overrides applied) and returns the new config.
-runtime::RunConfig apply_run_rewrites(const runtime::RunConfig& rc, const RunRewrites& rw,
-                                      const runtime::ComponentRegistry& reg);
+framework::RunConfig apply_run_rewrites(const framework::RunConfig& rc, const RunRewrites& rw,
+                                      const framework::ComponentRegistry& reg);
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch

@@ -8,7 +8,7 @@
 
 #include <spdlog/spdlog.h>
 
-namespace gdnav::runtime {
+namespace gdnav::launch {
 
 namespace fs = std::filesystem;
 
@@ -83,4 +83,4 @@ std::vector<std::string> clean_fastdds_shm(std::time_t since, const fs::path& di
     return removed;
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::launch

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace gdnav::runtime {
+namespace gdnav::launch {
 
 struct ShmSnapshot {
     std::vector<std::string> names;
@@ -22,4 +22,4 @@ std::vector<std::string> stale_fastdds_shm(std::time_t since, const std::filesys
 // Removes stale files as described above; returns the names removed.
 std::vector<std::string> clean_fastdds_shm(std::time_t since, const std::filesystem::path& dir = "/dev/shm");
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::launch

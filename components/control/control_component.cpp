@@ -9,14 +9,14 @@ namespace gdnav::control {
 
 namespace {
 
-class ControlComponent final : public runtime::Component {
+class ControlComponent final : public framework::Component {
 public:
     using Component::Component;
-    void configure(const config::Config& cfg, const runtime::RunInfo&, rnd::Stream&) override {
-        const auto file = cfg.get_file("autopilot", "control/mugin_autopilot.yaml", runtime::config_dir());
+    void configure(const config::Config& cfg, const framework::RunInfo&, rnd::Stream&) override {
+        const auto file = cfg.get_file("autopilot", "control/mugin_autopilot.yaml", framework::config_dir());
         autopilot_.configure(config::Config::load(file));
     }
-    void step(const runtime::StepContext& ctx) override {
+    void step(const framework::StepContext& ctx) override {
         if (!est_.available() || !targets_.available()) return;  // hold the last command
         const control::ControlEstimates e = est_.control_estimates();
         if (!initialized_) {
@@ -45,17 +45,17 @@ public:
 
 private:
     guidance::EstimateInputs est_{*this};
-    runtime::Input<msg::GuidanceTargets> targets_{*this, topics::kGuidance};
-    runtime::Output<msg::ControlCommands> out_{*this, topics::kControls};
+    framework::Input<msg::GuidanceTargets> targets_{*this, topics::kGuidance};
+    framework::Output<msg::ControlCommands> out_{*this, topics::kControls};
     Autopilot autopilot_;
     bool initialized_{false};
 };
 
 }  // namespace
 
-void register_control_component(runtime::ComponentRegistry& reg) {
+void register_control_component(framework::ComponentRegistry& reg) {
     reg.add("control", "autopilot PID loops at 50 Hz: targets + estimates -> ControlCommands",
-            runtime::make_factory<ControlComponent>());
+            framework::make_factory<ControlComponent>());
 }
 
 }  // namespace gdnav::control

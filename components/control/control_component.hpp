@@ -4,5 +4,5 @@
 #include "framework/registry.hpp"
 
 namespace gdnav::control {
-void register_control_component(runtime::ComponentRegistry& reg);
+void register_control_component(framework::ComponentRegistry& reg);
 }

@@ -6,11 +6,11 @@ namespace gdnav::diagnostics {
 
 namespace {
 
-class TruthAsEstimate final : public runtime::Component {
+class TruthAsEstimate final : public framework::Component {
 public:
     using Component::Component;
-    void configure(const config::Config&, const runtime::RunInfo&, rnd::Stream&) override {}
-    void step(const runtime::StepContext&) override {
+    void configure(const config::Config&, const framework::RunInfo&, rnd::Stream&) override {}
+    void step(const framework::StepContext&) override {
         if (!truth_.available()) return;  // hold the last estimates
         const auto& t = truth_.get();
         auto& a = air_.value();
@@ -37,17 +37,17 @@ public:
     }
 
 private:
-    runtime::Input<msg::Truth> truth_{*this, topics::kTruth};
-    runtime::Output<msg::AirDataEstimate> air_{*this, topics::kAirData};
-    runtime::Output<msg::AttitudeEstimate> att_{*this, topics::kAttitude};
-    runtime::Output<msg::PositionEstimate> pos_{*this, topics::kPosition};
+    framework::Input<msg::Truth> truth_{*this, topics::kTruth};
+    framework::Output<msg::AirDataEstimate> air_{*this, topics::kAirData};
+    framework::Output<msg::AttitudeEstimate> att_{*this, topics::kAttitude};
+    framework::Output<msg::PositionEstimate> pos_{*this, topics::kPosition};
 };
 
 }  // namespace
 
-void register_diagnostics(runtime::ComponentRegistry& reg) {
+void register_diagnostics(framework::ComponentRegistry& reg) {
     reg.add("truth_as_estimate", "diagnostic: Truth republished as the navigation estimate topics",
-            runtime::make_factory<TruthAsEstimate>());
+            framework::make_factory<TruthAsEstimate>());
 }
 
 }  // namespace gdnav::diagnostics

@@ -5,5 +5,5 @@
 #include "framework/registry.hpp"
 
 namespace gdnav::diagnostics {
-void register_diagnostics(runtime::ComponentRegistry& reg);
+void register_diagnostics(framework::ComponentRegistry& reg);
 }

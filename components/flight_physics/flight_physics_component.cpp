@@ -15,7 +15,7 @@ using config::Range;
 
 namespace {
 
-using runtime::to_array;
+using framework::to_array;
 
 earth::EarthTruthParams parse_earth(const Config& c) {
     earth::EarthTruthParams e;
@@ -26,12 +26,12 @@ earth::EarthTruthParams parse_earth(const Config& c) {
     return e;
 }
 
-class FlightPhysicsComponent final : public runtime::Component {
+class FlightPhysicsComponent final : public framework::Component {
 public:
     using Component::Component;
 
-    void configure(const Config& cfg, const runtime::RunInfo& run, rnd::Stream& stream) override {
-        const auto dir = runtime::config_dir();
+    void configure(const Config& cfg, const framework::RunInfo& run, rnd::Stream& stream) override {
+        const auto dir = framework::config_dir();
         const auto aircraft_file = cfg.get_file("aircraft", "aircraft/mugin.yaml", dir);
         const AircraftModel aircraft = AircraftModel::load(aircraft_file);
         EnvironmentParams env;
@@ -82,7 +82,7 @@ public:
         u_ = fp_->trim().controls;
     }
 
-    void step(const runtime::StepContext& ctx) override {
+    void step(const framework::StepContext& ctx) override {
         if (ctx.k > 0) {
             if (u_in_.available()) {
                 const auto& c = u_in_.get();
@@ -126,17 +126,17 @@ private:
         t.controls({s.controls.throttle, s.controls.elevator_rad, s.controls.aileron_rad, s.controls.rudder_rad});
     }
 
-    runtime::Input<msg::ControlCommands> u_in_{*this, topics::kControls, runtime::Lag::Previous};
-    runtime::Output<msg::Truth> out_{*this, topics::kTruth};
+    framework::Input<msg::ControlCommands> u_in_{*this, topics::kControls, framework::Lag::Previous};
+    framework::Output<msg::Truth> out_{*this, topics::kTruth};
     std::optional<FlightPhysics> fp_;
     Controls u_{};
 };
 
 }  // namespace
 
-void register_flight_physics(runtime::ComponentRegistry& reg) {
+void register_flight_physics(framework::ComponentRegistry& reg) {
     reg.add("flight_physics", "Mugin equations of motion, wind, turbulence, atmosphere: ControlCommands -> Truth",
-            runtime::make_factory<FlightPhysicsComponent>());
+            framework::make_factory<FlightPhysicsComponent>());
 }
 
 }  // namespace gdnav::physics

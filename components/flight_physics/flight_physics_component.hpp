@@ -19,5 +19,5 @@
 #include "framework/registry.hpp"
 
 namespace gdnav::physics {
-void register_flight_physics(runtime::ComponentRegistry& reg);
+void register_flight_physics(framework::ComponentRegistry& reg);
 }

@@ -11,12 +11,12 @@
 namespace gdnav::guidance {
 
 struct EstimateInputs {
-    explicit EstimateInputs(runtime::Component& owner)
+    explicit EstimateInputs(framework::Component& owner)
         : air(owner, topics::kAirData), att(owner, topics::kAttitude), pos(owner, topics::kPosition) {}
 
     [[nodiscard]] bool available() const { return air.available() && att.available() && pos.available(); }
-    [[nodiscard]] math::Quat q_nb() const { return runtime::to_quat(att.get().q_nb()); }
-    [[nodiscard]] math::Vec3 v_n() const { return runtime::to_vec3(pos.get().v_n_mps()); }
+    [[nodiscard]] math::Quat q_nb() const { return framework::to_quat(att.get().q_nb()); }
+    [[nodiscard]] math::Vec3 v_n() const { return framework::to_vec3(pos.get().v_n_mps()); }
     [[nodiscard]] NavState nav_state() const {
         return make_nav_state(air.get().tas_mps(), air.get().Hp_m(), pos.get().h_m(), v_n(), q_nb());
     }
@@ -32,9 +32,9 @@ struct EstimateInputs {
         return e;
     }
 
-    runtime::Input<msg::AirDataEstimate> air;
-    runtime::Input<msg::AttitudeEstimate> att;
-    runtime::Input<msg::PositionEstimate> pos;
+    framework::Input<msg::AirDataEstimate> air;
+    framework::Input<msg::AttitudeEstimate> att;
+    framework::Input<msg::PositionEstimate> pos;
 };
 
 }  // namespace gdnav::guidance

@@ -18,12 +18,12 @@ namespace gdnav::guidance {
 
 namespace {
 
-class GuidanceComponent final : public runtime::Component {
+class GuidanceComponent final : public framework::Component {
 public:
     using Component::Component;
-    void configure(const config::Config& cfg, const runtime::RunInfo&, rnd::Stream&) override {
+    void configure(const config::Config& cfg, const framework::RunInfo&, rnd::Stream&) override {
         Mission m = cfg.node()["mission"].IsMap() ? parse_mission(cfg.child("mission"))
-                                                  : load_mission(cfg.get_file("mission", runtime::config_dir()));
+                                                  : load_mission(cfg.get_file("mission", framework::config_dir()));
         try {
             guidance_.emplace(m);
         } catch (const std::invalid_argument& e) {
@@ -31,9 +31,9 @@ public:
         }
         // Needs nav_pos's `alignment_check` (gdnav/NavAlignment); a run without that producer fails at start.
         if (cfg.get_bool("until_aligned", false))
-            aligned_ = std::make_unique<runtime::Input<msg::NavAlignment>>(*this, topics::kAlignment);
+            aligned_ = std::make_unique<framework::Input<msg::NavAlignment>>(*this, topics::kAlignment);
     }
-    void step(const runtime::StepContext& ctx) override {
+    void step(const framework::StepContext& ctx) override {
         auto& o = out_.value();
         if (!est_.available()) {  // estimates lost: hold the last targets
             return;
@@ -74,19 +74,19 @@ private:
     }
 
     EstimateInputs est_{*this};
-    std::unique_ptr<runtime::Input<msg::NavAlignment>> aligned_;
+    std::unique_ptr<framework::Input<msg::NavAlignment>> aligned_;
     bool cleared_{false};
     bool announced_{false};
-    runtime::Output<msg::GuidanceTargets> out_{*this, topics::kGuidance};
+    framework::Output<msg::GuidanceTargets> out_{*this, topics::kGuidance};
     std::optional<Guidance> guidance_;
     std::uint32_t last_op_{0};
 };
 
 }  // namespace
 
-void register_guidance_component(runtime::ComponentRegistry& reg) {
+void register_guidance_component(framework::ComponentRegistry& reg) {
     reg.add("guidance", "mission operations and triggers: estimates -> GuidanceTargets",
-            runtime::make_factory<GuidanceComponent>());
+            framework::make_factory<GuidanceComponent>());
 }
 
 }  // namespace gdnav::guidance

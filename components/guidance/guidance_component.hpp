@@ -4,5 +4,5 @@
 #include "framework/registry.hpp"
 
 namespace gdnav::guidance {
-void register_guidance_component(runtime::ComponentRegistry& reg);
+void register_guidance_component(framework::ComponentRegistry& reg);
 }

@@ -19,16 +19,16 @@ LiveBridge::~LiveBridge() {
     if (server_) server_->stop();
 }
 
-void LiveBridge::configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream&) {
-    std::vector<std::string> topics = cfg.has("topics") ? cfg.get_strings("topics") : runtime::known_topics();
+void LiveBridge::configure(const config::Config& cfg, const framework::RunInfo& run, rnd::Stream&) {
+    std::vector<std::string> topics = cfg.has("topics") ? cfg.get_strings("topics") : framework::known_topics();
     const bool with_viewer = cfg.get_bool("viewer", false);
     const auto viewer_decimation = static_cast<std::uint64_t>(cfg.get_int("viewer_decimation", 10, 1, 1000000));
     if (topics.empty() && !with_viewer)
         cfg.fail("topics", "at least one topic is required (or viewer: true; leave the key out: every data topic)");
     for (auto& t : topics) {
-        const std::string full = recorder::resolve_topic(t);
+        const std::string full = io::recording::resolve_topic(t);
         if (full.empty())
-            cfg.fail("topics", "unknown topic '" + t + "' (known: " + recorder::known_topics_list() + ")");
+            cfg.fail("topics", "unknown topic '" + t + "' (known: " + io::recording::known_topics_list() + ")");
         t = full;
     }
     // What a viewer shows as the server's name: gdnav and the run it belongs to.
@@ -40,12 +40,12 @@ void LiveBridge::configure(const config::Config& cfg, const runtime::RunInfo& ru
     options_.max_pending_bytes = static_cast<std::size_t>(cfg.get_int("max_pending_kib", 1024, 16, 1 << 20)) * 1024;
     options_.queue_frames = static_cast<std::size_t>(cfg.get_int("queue_steps", 64, 1, 65536));
     try {
-        foxglove_ws::check_address(options_.address);
+        io::foxglove_ws::check_address(options_.address);
     } catch (const std::invalid_argument& e) {
         cfg.fail("bind", e.what());
     }
     try {  // here, so that a port in use is a configuration error before the run starts
-        foxglove_ws::check_listen(options_.address, options_.port);
+        io::foxglove_ws::check_listen(options_.address, options_.port);
     } catch (const std::runtime_error& e) {
         cfg.fail("port", e.what());
     }
@@ -53,8 +53,8 @@ void LiveBridge::configure(const config::Config& cfg, const runtime::RunInfo& ru
     if (with_viewer) sources_.push_back(std::make_unique<ViewerSource>(*this, viewer_decimation));  // after our inputs
     // Each input is read only at the steps some source streams (a shared input: both sources' steps), so over DDS
     // the producers send only those (InputBase::stride).
-    const auto& viewer_topics = viewer::viewer_input_topics();
-    for (runtime::InputBase* in : inputs()) {
+    const auto& viewer_topics = io::viewer::viewer_input_topics();
+    for (framework::InputBase* in : inputs()) {
         std::uint64_t n = 0;
         if (std::find(topics.begin(), topics.end(), in->topic()) != topics.end()) n = std::gcd(n, decimation_);
         if (with_viewer && std::find(viewer_topics.begin(), viewer_topics.end(), in->topic()) != viewer_topics.end())
@@ -62,18 +62,18 @@ void LiveBridge::configure(const config::Config& cfg, const runtime::RunInfo& ru
         in->set_stride(n);
     }
     run_ = run;
-    step_ns_ = recorder::step_ns(run.dt_s);
+    step_ns_ = io::recording::step_ns(run.dt_s);
 }
 
 void LiveBridge::start_server() {
-    std::vector<foxglove_ws::Channel> channels;
+    std::vector<io::foxglove_ws::Channel> channels;
     first_ids_.clear();
     for (const auto& s : sources_) {
         first_ids_.push_back(static_cast<std::uint32_t>(channels.size() + 1));
         for (auto& c : s->channels()) channels.push_back(std::move(c));
     }
     const std::size_t n = channels.size();
-    server_ = std::make_unique<foxglove_ws::Server>(options_, std::move(channels));
+    server_ = std::make_unique<io::foxglove_ws::Server>(options_, std::move(channels));
     server_->start();
     const bool v6 = options_.address.find(':') != std::string::npos;
     const std::string host = v6 ? "[" + options_.address + "]" : options_.address;
@@ -81,9 +81,9 @@ void LiveBridge::start_server() {
                  options_.port, n, decimation_);
 }
 
-void LiveBridge::step(const runtime::StepContext& ctx) {
+void LiveBridge::step(const framework::StepContext& ctx) {
     if (!server_) start_server();
-    foxglove_ws::Frame frame;  // empty vectors: no allocation unless a source adds a message
+    io::foxglove_ws::Frame frame;  // empty vectors: no allocation unless a source adds a message
     frame.log_time_ns = ctx.k * step_ns_;
     for (std::size_t i = 0; i < sources_.size(); ++i)
         sources_[i]->encode(ctx, frame.log_time_ns, first_ids_[i], *server_, frame);
@@ -98,7 +98,7 @@ void LiveBridge::step(const runtime::StepContext& ctx) {
 void LiveBridge::finish(bool) {
     if (finished_) return;
     finished_ = true;
-    foxglove_ws::ServerStats s;
+    io::foxglove_ws::ServerStats s;
     if (server_) {
         server_->stop();
         s = server_->stats();
@@ -126,9 +126,9 @@ void LiveBridge::finish(bool) {
     if (!o) spdlog::warn("{}: cannot write {}", name(), f.string());
 }
 
-void register_live(runtime::ComponentRegistry& reg) {
+void register_live(framework::ComponentRegistry& reg) {
     reg.add("live", "streams topics to Foxglove over the Foxglove WebSocket protocol (gdnav run --live; docs/viewing.md)",
-            runtime::make_factory<LiveBridge>());
+            framework::make_factory<LiveBridge>());
 }
 
 }  // namespace gdnav::live

@@ -15,14 +15,14 @@ namespace gdnav::live {
 class ViewerSource final : public ChannelSource {
 public:
     // Declares the viewer's inputs on `owner` where it has none (call after the owner's own inputs).
-    ViewerSource(runtime::Component& owner, std::uint64_t decimation);
-    [[nodiscard]] std::vector<foxglove_ws::Channel> channels() const override;
-    void encode(const runtime::StepContext& ctx, std::uint64_t log_time_ns, std::uint32_t first_id,
-                const foxglove_ws::Server& server, foxglove_ws::Frame& frame) override;
+    ViewerSource(framework::Component& owner, std::uint64_t decimation);
+    [[nodiscard]] std::vector<io::foxglove_ws::Channel> channels() const override;
+    void encode(const framework::StepContext& ctx, std::uint64_t log_time_ns, std::uint32_t first_id,
+                const io::foxglove_ws::Server& server, io::foxglove_ws::Frame& frame) override;
 
 private:
-    viewer::ViewerChannels channels_;
-    std::vector<viewer::ViewerMessage> out_;
+    io::viewer::ViewerChannels channels_;
+    std::vector<io::viewer::ViewerMessage> out_;
 };
 
 }  // namespace gdnav::live

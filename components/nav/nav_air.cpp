@@ -15,11 +15,11 @@ namespace {
 class NavAir final : public FilterComponent<AirDataFilter> {
 public:
     using FilterComponent::FilterComponent;
-    void configure(const config::Config& cfg, const runtime::RunInfo&, rnd::Stream& stream) override {
+    void configure(const config::Config& cfg, const framework::RunInfo&, rnd::Stream& stream) override {
         const NavFiles files = load_nav_files(cfg, false);
         filter_.configure(files.tuning.child("air"), stream);
     }
-    void step(const runtime::StepContext& ctx) override {
+    void step(const framework::StepContext& ctx) override {
         if (!air_.available() || !atm_.available()) return;  // a lost sensor: hold the last estimate
         const AirSample a = from_msg(air_.get());
         const AtmSample p = from_msg(atm_.get());
@@ -40,15 +40,15 @@ private:
                            rejected_before_init(), total());
     }
 
-    runtime::Input<msg::AirSample> air_{*this, topics::kAir};
-    runtime::Input<msg::AtmSample> atm_{*this, topics::kAtm};
-    runtime::Output<msg::AirDataEstimate> out_{*this, topics::kAirData};
+    framework::Input<msg::AirSample> air_{*this, topics::kAir};
+    framework::Input<msg::AtmSample> atm_{*this, topics::kAtm};
+    framework::Output<msg::AirDataEstimate> out_{*this, topics::kAirData};
 };
 
 }  // namespace
 
-void register_nav_air(runtime::ComponentRegistry& reg) {
-    reg.add("nav_air", "air data filter: AirSample + AtmSample -> AirDataEstimate", runtime::make_factory<NavAir>());
+void register_nav_air(framework::ComponentRegistry& reg) {
+    reg.add("nav_air", "air data filter: AirSample + AtmSample -> AirDataEstimate", framework::make_factory<NavAir>());
 }
 
 }  // namespace gdnav::nav

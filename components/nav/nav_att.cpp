@@ -25,9 +25,9 @@
 
 namespace gdnav::nav {
 
-using runtime::Input;
-using runtime::Lag;
-using runtime::Output;
+using framework::Input;
+using framework::Lag;
+using framework::Output;
 
 namespace {
 
@@ -73,7 +73,7 @@ std::optional<InFlightAligner> configure_estimator(const config::Config& cfg, co
 class NavAtt final : public VariantFilterComponent<AttitudeFilter, kAttitudeSection> {
 public:
     using VariantFilterComponent::VariantFilterComponent;
-    void configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream& stream) override {
+    void configure(const config::Config& cfg, const framework::RunInfo& run, rnd::Stream& stream) override {
         const NavFiles files = configure_filter(cfg, stream);
         if (auto c = cfg.optional_child("yaw_from_gnss")) yaw_.emplace(parse_gnss_yaw(*c));
         estimator_ = configure_estimator(cfg, files, filter_.tuning().init_mode, run.dt_s);
@@ -85,7 +85,7 @@ public:
             handover_out_ = std::make_unique<Output<msg::NavHandover>>(*this, topics::kHandover);
         }
     }
-    void step(const runtime::StepContext& ctx) override {
+    void step(const framework::StepContext& ctx) override {
         if (estimator_ && estimator_->running()) {
             step_estimator(ctx);
             return;
@@ -99,7 +99,7 @@ private:
     // hand-over the attitude filter starts from it: from its alignment as from the sensors' published one (in-flight
     // alignment), or from its state and joint covariance at the GNSS loss. With HandOver::kNever the GNSS loss only
     // ends the estimator's GNSS-aided phase, and nav_att publishes it to the end.
-    void step_estimator(const runtime::StepContext& ctx) {
+    void step_estimator(const framework::StepContext& ctx) {
         InFlightAligner& est = *estimator_;
         if (!imu_.available() || !mag_.available() || !air_.available()) return;
         GnssSample fix;  // fix_valid false unless a sample is there
@@ -145,7 +145,7 @@ private:
     // chi-square gate distrusted the source), so in the nominal case both switch at the same step. After a
     // truth-free start the position filter's gate is not trusted before the estimator is aligned: it runs on the
     // estimator's coarse attitude until then and may reject good fixes (nav_pos starts again at the alignment).
-    bool gnss_lost(const runtime::StepContext& ctx, const GnssSample& fix) {
+    bool gnss_lost(const framework::StepContext& ctx, const GnssSample& fix) {
         if (gnss_.lost()) loss_.set_publisher_dead();
         loss_.update(ctx.t_s, fix.fix_valid && checks::gnss_fix_ok(fix));
         const bool pos_trusted = estimator_->aligned() || filter_.tuning().init_mode == InitMode::kAlignment;
@@ -189,7 +189,7 @@ private:
         (void)filter_.fuse_yaw(g.yaw_rad(), std::max(var, yaw_->fuse_sigma_min_rad * yaw_->fuse_sigma_min_rad));
     }
 
-    void step_filter(const runtime::StepContext& ctx) {
+    void step_filter(const framework::StepContext& ctx) {
         if (!imu_.available() || !mag_.available()) return;
         const ImuSample imu = from_msg(imu_.get());
         const MagSample mag = from_msg(mag_.get());
@@ -234,9 +234,9 @@ private:
 
 }  // namespace
 
-void register_nav_att(runtime::ComponentRegistry& reg) {
+void register_nav_att(framework::ComponentRegistry& reg) {
     reg.add("nav_att", "attitude filter: IMU + magnetometer (+ p_n of k-1) -> AttitudeEstimate",
-            runtime::make_factory<NavAtt>());
+            framework::make_factory<NavAtt>());
 }
 
 }  // namespace gdnav::nav

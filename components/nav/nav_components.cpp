@@ -4,7 +4,7 @@
 
 namespace gdnav::nav {
 
-void register_nav_components(runtime::ComponentRegistry& reg) {
+void register_nav_components(framework::ComponentRegistry& reg) {
     register_nav_air(reg);
     register_nav_att(reg);
     register_nav_pos(reg);

@@ -21,5 +21,5 @@
 #include "framework/registry.hpp"
 
 namespace gdnav::nav {
-void register_nav_components(runtime::ComponentRegistry& reg);
+void register_nav_components(framework::ComponentRegistry& reg);
 }

@@ -6,9 +6,9 @@
 
 namespace gdnav::nav {
 
-using runtime::to_array;
-using runtime::to_quat;
-using runtime::to_vec3;
+using framework::to_array;
+using framework::to_quat;
+using framework::to_vec3;
 
 inline ImuSample from_msg(const msg::ImuSample& m) { return {to_vec3(m.f_b_mps2()), to_vec3(m.w_b_rps())}; }
 inline MagSample from_msg(const msg::MagSample& m) { return {to_vec3(m.b_b_nT())}; }
@@ -16,7 +16,7 @@ inline MagSample from_msg(const msg::MagSample& m) { return {to_vec3(m.b_b_nT())
 // a magnetometer sample the magnetic fields stay zero.
 inline Alignment alignment_from_msg(const msg::ImuSample& i, const msg::MagSample* mag = nullptr) {
     Alignment a;
-    a.q_nb = runtime::to_quat(i.align_q_nb());
+    a.q_nb = framework::to_quat(i.align_q_nb());
     a.att_sigma_rad = i.align_att_sigma_rad();
     a.gyr_err_rps = to_vec3(i.align_gyr_err_rps());
     a.gyr_err_sigma_rps = to_vec3(i.align_gyr_err_sigma_rps());

@@ -18,7 +18,7 @@ config::Config builtin_variant() {
 }  // namespace
 
 NavFiles load_nav_files(const config::Config& cfg, bool has_variant) {
-    const auto dir = runtime::config_dir();
+    const auto dir = framework::config_dir();
     NavFiles f{config::Config::load(cfg.get_file("tuning", "nav/tuning.yaml", dir)),
                has_variant ? config::Config::load(cfg.get_file("variant", "nav/variants/baseline.yaml", dir))
                            : builtin_variant(),

@@ -80,8 +80,8 @@ inline constexpr char kAttitudeSection[] = "attitude";
 inline constexpr char kPositionSection[] = "position";
 
 // Registration, one per component file.
-void register_nav_air(runtime::ComponentRegistry& reg);
-void register_nav_att(runtime::ComponentRegistry& reg);
-void register_nav_pos(runtime::ComponentRegistry& reg);
+void register_nav_air(framework::ComponentRegistry& reg);
+void register_nav_att(framework::ComponentRegistry& reg);
+void register_nav_pos(framework::ComponentRegistry& reg);
 
 }  // namespace gdnav::nav

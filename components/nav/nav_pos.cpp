@@ -24,15 +24,15 @@
 
 namespace gdnav::nav {
 
-using runtime::Input;
-using runtime::Output;
+using framework::Input;
+using framework::Output;
 
 namespace {
 
 class NavPos final : public VariantFilterComponent<PositionFilter, kPositionSection> {
 public:
     using VariantFilterComponent::VariantFilterComponent;
-    void configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream& stream) override {
+    void configure(const config::Config& cfg, const framework::RunInfo& run, rnd::Stream& stream) override {
         (void)configure_filter(cfg, stream);
         if (auto c = cfg.optional_child("alignment_check")) monitor_.emplace(parse_alignment_criteria(*c), run.dt_s);
         if (cfg.has("in_flight_alignment"))
@@ -45,7 +45,7 @@ public:
         if (monitor_ || follow_)  // only then is there an alignment topic
             align_out_ = std::make_unique<Output<msg::NavAlignment>>(*this, topics::kAlignment);
     }
-    void step(const runtime::StepContext& ctx) override {
+    void step(const framework::StepContext& ctx) override {
         // The step at which nav_att's estimator declares itself aligned (with the in-flight alignment also its
         // hand-over): the position filter starts again from its accelerometer errors, as it ran on the estimator's
         // coarse attitude until then. A hand-over at the GNSS loss leaves the position filter alone: it goes denied
@@ -63,7 +63,7 @@ public:
 private:
     // `wind_at_loss: gnss_ins`: the estimator's latest wind and air-data offsets, which the filter keeps from the loss
     // on; said once if the filter goes denied without them (it then keeps its own wind).
-    void take_gnss_ins_calibration(const runtime::StepContext& ctx) {
+    void take_gnss_ins_calibration(const framework::StepContext& ctx) {
         if (handover_->available() && handover_->get().started()) {
             const msg::NavHandover& h = handover_->get();
             filter_.set_gnss_ins_calibration(to_vec3(h.wind_n_mps()), to_vec3(h.air_data_offsets()));
@@ -77,7 +77,7 @@ private:
 
     // The position filter starts again with the in-flight alignment's E_acc (the attitude filter has just started
     // again from its attitude; the hand-over step always has a fix).
-    void realign(const runtime::StepContext& ctx) {
+    void realign(const framework::StepContext& ctx) {
         GnssSample gnss;  // fix_valid false unless a sample is there
         if (gnss_.available()) gnss = from_msg(gnss_.get());
         const AirDataEstimate air = from_msg(air_.get());
@@ -95,7 +95,7 @@ private:
         to_msg(e, out_.value());
     }
     // Following the in-flight alignment, the aligned flag and the sigmas are nav_att's estimator's (gdnav/NavHandover).
-    void publish_aligner_flag(const runtime::StepContext& ctx) {
+    void publish_aligner_flag(const framework::StepContext& ctx) {
         const bool have = handover_->available() && handover_->get().started();
         const bool aligned = have && handover_->get().aligned();
         if (aligned && !aligned_seen_) {
@@ -113,7 +113,7 @@ private:
         if (!monitor_) o.gnss_nis_mean(0.0);
     }
 
-    void step_monitor(const runtime::StepContext& ctx, std::uint64_t accepted_before) {
+    void step_monitor(const framework::StepContext& ctx, std::uint64_t accepted_before) {
         const msg::AttitudeEstimate& att = att_.get();
         if (!monitor_->started()) {
             const auto& p = filter_.aided_covariance();
@@ -122,7 +122,7 @@ private:
         }
         const double d2 = filter_.gate_d2_last();
         const bool was_aligned = monitor_->aligned();
-        monitor_->step(ctx.t_s, runtime::to_vec3(imu_.get().f_b_mps2()), runtime::to_quat(att.q_nb()),
+        monitor_->step(ctx.t_s, framework::to_vec3(imu_.get().f_b_mps2()), framework::to_quat(att.q_nb()),
                        att.att_sigma_rad()[2], filter_.gate_accepted() > accepted_before ? &d2 : nullptr,
                        filter_.gnss_denied());
         if (monitor_->aligned() && !was_aligned && !handover_)  // else the aligner's hand-over is the event
@@ -138,7 +138,7 @@ private:
         o.gnss_nis_mean(monitor_->nis_mean());
     }
 
-    void step_filter(const runtime::StepContext& ctx) {
+    void step_filter(const framework::StepContext& ctx) {
         if (!imu_.available() || !air_.available() || !att_.available()) return;
         GnssSample gnss;  // fix_valid false unless a sample is there
         if (gnss_.available()) {
@@ -237,8 +237,9 @@ private:
 
 }  // namespace
 
-void register_nav_pos(runtime::ComponentRegistry& reg) {
-    reg.add("nav_pos", "position filter, GNSS-aided then GNSS-denied -> PositionEstimate", runtime::make_factory<NavPos>());
+void register_nav_pos(framework::ComponentRegistry& reg) {
+    reg.add("nav_pos", "position filter, GNSS-aided then GNSS-denied -> PositionEstimate",
+            framework::make_factory<NavPos>());
 }
 
 }  // namespace gdnav::nav

@@ -12,7 +12,7 @@ std::string RejectionReporting::counts(bool summary) const {
     return fmt::format("{}rejected samples: {}", summary ? "end of run: " : "", count_details());
 }
 
-void RejectionReporting::report_counts(const runtime::StepContext& ctx) {
+void RejectionReporting::report_counts(const framework::StepContext& ctx) {
     const std::uint64_t n = total();
     const bool due = !(n <= reported_ || (reported_ > 0 && ctx.t_s - t_reported_s_ < kPeriod_s));
     if (due) {

@@ -11,7 +11,7 @@
 
 namespace gdnav::nav {
 
-class RejectionReporting : public runtime::Component {
+class RejectionReporting : public framework::Component {
 public:
     static constexpr double kPeriod_s = 10.0;
     using Component::Component;
@@ -27,7 +27,7 @@ protected:
     // The report; `summary` marks the one of the end of the run.
     [[nodiscard]] std::string counts(bool summary) const;
     // Publishes the counts when a report is due at this step.
-    void report_counts(const runtime::StepContext& ctx);
+    void report_counts(const framework::StepContext& ctx);
     void reject_before_init() { ++init_rejected_; }
     [[nodiscard]] std::uint64_t rejected_before_init() const { return init_rejected_; }
 

@@ -47,7 +47,7 @@ private:
     sigset_t previous_{};
 };
 
-class NavRecorder final : public runtime::Component {
+class NavRecorder final : public framework::Component {
 public:
     using Component::Component;
     ~NavRecorder() override {
@@ -58,7 +58,7 @@ public:
         }
     }
 
-    void configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream&) override {
+    void configure(const config::Config& cfg, const framework::RunInfo& run, rnd::Stream&) override {
         run_ = run;
         const double t_gnss = cfg.get_double("t_gnss_s", 100.0, Range{-1e6, 1e7});
         const double t_start = cfg.get_double("metrics_start_s", 0.0, Range{-1e6, 1e7});
@@ -71,17 +71,17 @@ public:
             cfg.fail("reference", "'" + reference + "' is not one of truth, none");
         reference_ = reference == "truth";
         if (cfg.get_bool("alignment", false))  // in-flight alignment runs only: the time to align in metrics.yaml
-            align_ = std::make_unique<runtime::Input<msg::NavAlignment>>(*this, topics::kAlignment);
+            align_ = std::make_unique<framework::Input<msg::NavAlignment>>(*this, topics::kAlignment);
         if (cfg.get_bool("gnss_track", true))
-            gnss_ = std::make_unique<runtime::Input<msg::GnssSample>>(*this, topics::kGnss);
+            gnss_ = std::make_unique<framework::Input<msg::GnssSample>>(*this, topics::kGnss);
         dir_ = run.out_dir;
-        truth_rows_.resize(flush_rows_ * kTruthColumns);
-        est_rows_.resize(flush_rows_ * kEstimateColumns);
-        err_rows_.resize(flush_rows_ * kErrorColumns);
-        gnss_rows_.resize(flush_rows_ * kGnssColumns);
+        truth_rows_.resize(flush_rows_ * io::run_series::kTruthColumns);
+        est_rows_.resize(flush_rows_ * io::run_series::kEstimateColumns);
+        err_rows_.resize(flush_rows_ * io::run_series::kErrorColumns);
+        gnss_rows_.resize(flush_rows_ * io::run_series::kGnssColumns);
     }
 
-    void step(const runtime::StepContext& ctx) override {
+    void step(const framework::StepContext& ctx) override {
         if (!truth_.available()) return;  // the essential producer is gone; nothing to compare
         const msg::Truth& t = truth_.get();
         if (!started_) start(t);
@@ -91,7 +91,8 @@ public:
         if (reference_) metrics_.note_estimates(ctx.t_s, ctx.dt_s, {air_.available(), att_.available(), pos_.available()});
         std::optional<metrics::NavErrors> err;
         if (have_est && reference_) {
-            err = metrics::nav_errors(estimate_state(air_.get(), att_.get(), pos_.get()), truth_state(t), origin_.radii);
+            err = metrics::nav_errors(io::run_series::estimate_state(air_.get(), att_.get(), pos_.get()),
+                                      io::run_series::truth_state(t), origin_.radii);
             metrics_.add_errors(ctx.t_s, ctx.dt_s, *err);
         }
         if (align_ && align_->available() && align_->get().aligned() && !t_aligned_s_)
@@ -100,15 +101,18 @@ public:
         ++steps_;
         if (dir_.empty()) return;
         if (gnss_ && gnss_->available() && gnss_->get().fix_valid() && gnss_count_ < flush_rows_)
-            fill_gnss_row(&gnss_rows_[kGnssColumns * gnss_count_++], ctx.t_s, gnss_->get());
+            io::run_series::fill_gnss_row(&gnss_rows_[io::run_series::kGnssColumns * gnss_count_++], ctx.t_s,
+                                          gnss_->get());
         if (ctx.k % decimation_ == 0) {
-            double* truth_row = &truth_rows_[kTruthColumns * rows_];
-            fill_truth_row(truth_row, ctx.t_s, t, origin_, metrics_.distance_since_gnss_m());
-            if (!reference_) std::fill(truth_row + 1, truth_row + kTruthColumns, kNoValue);  // not a reference
+            double* truth_row = &truth_rows_[io::run_series::kTruthColumns * rows_];
+            io::run_series::fill_truth_row(truth_row, ctx.t_s, t, origin_, metrics_.distance_since_gnss_m());
+            // not a reference
+            if (!reference_) std::fill(truth_row + 1, truth_row + io::run_series::kTruthColumns, kNoValue);
             const double h_m = reference_ || !pos_.available() ? t.h_m() : pos_.get().h_m();
-            fill_estimate_row(&est_rows_[kEstimateColumns * rows_], ctx.t_s, air_.ptr(), att_.ptr(), pos_.ptr(),
-                              origin_, h_m);
-            fill_error_row(&err_rows_[kErrorColumns * rows_], ctx.t_s, err ? &*err : nullptr);
+            io::run_series::fill_estimate_row(&est_rows_[io::run_series::kEstimateColumns * rows_], ctx.t_s, air_.ptr(),
+                                              att_.ptr(), pos_.ptr(), origin_, h_m);
+            io::run_series::fill_error_row(&err_rows_[io::run_series::kErrorColumns * rows_], ctx.t_s,
+                                           err ? &*err : nullptr);
             ++rows_;
         }
         if (rows_ == flush_rows_ || gnss_count_ == flush_rows_) flush(false);  // a WriteError ends the run
@@ -188,10 +192,10 @@ private:
         std::error_code ec;
         fs::remove(fs::path(dir_) / "metrics.yaml", ec);  // a stale record of an earlier run must not survive
         file_ = std::make_unique<H5File>(fs::path(dir_) / "run.h5");
-        tables_[0] = file_->add_table("truth", truth_columns(), flush_rows_, compression_);
-        tables_[1] = file_->add_table("estimate", estimate_columns(), flush_rows_, compression_);
-        tables_[2] = file_->add_table("error", error_columns(), flush_rows_, compression_);
-        if (gnss_) tables_[3] = file_->add_table("gnss", gnss_columns(), flush_rows_, compression_);
+        tables_[0] = file_->add_table("truth", io::run_series::truth_columns(), flush_rows_, compression_);
+        tables_[1] = file_->add_table("estimate", io::run_series::estimate_columns(), flush_rows_, compression_);
+        tables_[2] = file_->add_table("error", io::run_series::error_columns(), flush_rows_, compression_);
+        if (gnss_) tables_[3] = file_->add_table("gnss", io::run_series::gnss_columns(), flush_rows_, compression_);
         file_->set_attribute("format", std::string("gdnav-nav-record"));
         file_->set_attribute("format_version", kFormatVersion);
         file_->set_attribute("complete", static_cast<std::int64_t>(0));
@@ -264,17 +268,17 @@ private:
         return f.str();
     }
 
-    runtime::Input<msg::Truth> truth_{*this, topics::kTruth};
-    runtime::Input<msg::AirDataEstimate> air_{*this, topics::kAirData};
-    runtime::Input<msg::AttitudeEstimate> att_{*this, topics::kAttitude};
-    runtime::Input<msg::PositionEstimate> pos_{*this, topics::kPosition};
-    std::unique_ptr<runtime::Input<msg::GnssSample>> gnss_;
-    std::unique_ptr<runtime::Input<msg::NavAlignment>> align_;
+    framework::Input<msg::Truth> truth_{*this, topics::kTruth};
+    framework::Input<msg::AirDataEstimate> air_{*this, topics::kAirData};
+    framework::Input<msg::AttitudeEstimate> att_{*this, topics::kAttitude};
+    framework::Input<msg::PositionEstimate> pos_{*this, topics::kPosition};
+    std::unique_ptr<framework::Input<msg::GnssSample>> gnss_;
+    std::unique_ptr<framework::Input<msg::NavAlignment>> align_;
     std::optional<double> t_aligned_s_;
 
-    runtime::RunInfo run_;
+    framework::RunInfo run_;
     metrics::RunMetrics metrics_;
-    Origin origin_;
+    io::run_series::Origin origin_;
     std::string dir_;
     std::uint64_t decimation_{10};
     std::size_t flush_rows_{600};
@@ -294,9 +298,9 @@ private:
 
 }  // namespace
 
-void register_nav_recorder(runtime::ComponentRegistry& reg) {
+void register_nav_recorder(framework::ComponentRegistry& reg) {
     reg.add("nav_recorder", "navigation errors, online metrics and HDF5 time series (run.h5, metrics.yaml)",
-            runtime::make_factory<NavRecorder>());
+            framework::make_factory<NavRecorder>());
 }
 
 }  // namespace gdnav::nav_recorder

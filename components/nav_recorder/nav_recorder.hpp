@@ -35,5 +35,5 @@
 #include "framework/registry.hpp"
 
 namespace gdnav::nav_recorder {
-void register_nav_recorder(runtime::ComponentRegistry& reg);
+void register_nav_recorder(framework::ComponentRegistry& reg);
 }

@@ -13,7 +13,7 @@
 namespace gdnav::recorder {
 
 
-void Recorder::configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream&) {
+void Recorder::configure(const config::Config& cfg, const framework::RunInfo& run, rnd::Stream&) {
     const auto topics = cfg.get_strings("topics");
     decimation_ = static_cast<std::uint64_t>(cfg.get_int("decimation", 1, 1, 100000));
     chunk_bytes_ = static_cast<std::size_t>(cfg.get_int("chunk_kib", 1024, 1, 65536)) * 1024;
@@ -21,24 +21,25 @@ void Recorder::configure(const config::Config& cfg, const runtime::RunInfo& run,
     const auto viewer_decimation = static_cast<std::uint64_t>(cfg.get_int("viewer_decimation", 10, 1, 100000));
     if (topics.empty() && !with_viewer) cfg.fail("topics", "at least one topic is required (or viewer: true)");
     for (const auto& t : topics) {
-        const runtime::MessageOps* ops = runtime::find_topic(t);
+        const msg::MessageOps* ops = framework::find_topic(t);
         if (!ops) {
             std::string known;
-            for (const auto& k : runtime::known_topics()) known += (known.empty() ? "" : ", ") + k;
+            for (const auto& k : framework::known_topics()) known += (known.empty() ? "" : ", ") + k;
             cfg.fail("topics", "unknown topic '" + t + "' (known: " + known + ")");
         }
         auto tr = std::make_unique<Track>();
-        tr->input = std::make_unique<runtime::InputBase>(*this, t, runtime::Lag::Same, *ops);
+        tr->input = std::make_unique<framework::InputBase>(*this, t, framework::Lag::Same, *ops);
         tracks_.push_back(std::move(tr));
     }
-    if (with_viewer) viewer_ = std::make_unique<viewer::ViewerChannels>(*this, viewer::ViewerOptions{viewer_decimation});
+    if (with_viewer)
+        viewer_ = std::make_unique<io::viewer::ViewerChannels>(*this, io::viewer::ViewerOptions{viewer_decimation});
     dir_ = run.out_dir.empty() ? std::string() : (std::filesystem::path(run.out_dir) / "record").string();
     run_ = run;
 }
 
 void Recorder::open_file() {
     if (writer_) return;
-    RecordingOptions o;
+    io::recording::RecordingOptions o;
     o.t0_s = run_.t0_s;
     o.dt_s = run_.dt_s;
     o.chunk_bytes = chunk_bytes_;
@@ -47,19 +48,19 @@ void Recorder::open_file() {
         text << f.rdbuf();
         o.run_yaml = text.str();
     }
-    o.run_metadata = run_metadata(run_, o.run_yaml);
+    o.run_metadata = io::recording::run_metadata(run_, o.run_yaml);
     if (viewer_) o.derived_channels = viewer_->channels();
     std::vector<std::string> topics;
     for (const auto& tr : tracks_) topics.push_back(tr->input->topic());
-    writer_ = std::make_unique<RecordingWriter>(dir_, topics, std::move(o));
+    writer_ = std::make_unique<io::recording::RecordingWriter>(dir_, topics, std::move(o));
 }
 
-void Recorder::step(const runtime::StepContext& ctx) {
+void Recorder::step(const framework::StepContext& ctx) {
     if (dir_.empty()) return;
     open_file();
     if (viewer_) {
         viewer_out_.clear();
-        viewer_->encode(ctx, ctx.k * step_ns(run_.dt_s), viewer_out_);
+        viewer_->encode(ctx, ctx.k * io::recording::step_ns(run_.dt_s), viewer_out_);
         for (const auto& [channel, cdr] : viewer_out_) writer_->append_encoded(channel, ctx.k, cdr);
     }
     if (ctx.k % decimation_ != 0) return;
@@ -87,9 +88,9 @@ void Recorder::finish(bool completed) {
     spdlog::debug("recorder: wrote {}", dir_);
 }
 
-void register_recorder(runtime::ComponentRegistry& reg) {
+void register_recorder(framework::ComponentRegistry& reg) {
     reg.add("recorder", "records topics to <out>/record (run.mcap: indexed MCAP, CDR + omgidl; digest.yaml)",
-            runtime::make_factory<Recorder>());
+            framework::make_factory<Recorder>());
 }
 
 }  // namespace gdnav::recorder

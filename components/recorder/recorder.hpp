@@ -27,31 +27,31 @@
 
 namespace gdnav::recorder {
 
-class Recorder final : public runtime::Component {
+class Recorder final : public framework::Component {
 public:
     explicit Recorder(std::string name) : Component(std::move(name)) {}
-    void configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream& stream) override;
-    void step(const runtime::StepContext& ctx) override;
+    void configure(const config::Config& cfg, const framework::RunInfo& run, rnd::Stream& stream) override;
+    void step(const framework::StepContext& ctx) override;
     void finish(bool completed) override;
 
 private:
     struct Track {
-        std::unique_ptr<runtime::InputBase> input;
+        std::unique_ptr<framework::InputBase> input;
         bool lost_reported{false};
         std::uint64_t lost_at{0};
     };
     void open_file();
     std::vector<std::unique_ptr<Track>> tracks_;
-    std::unique_ptr<viewer::ViewerChannels> viewer_;  // the viewer channels (viewer: true), after the topics
-    std::vector<viewer::ViewerMessage> viewer_out_;
-    std::unique_ptr<RecordingWriter> writer_;  // opened at the first step (run.yaml is written by then)
-    runtime::RunInfo run_;
+    std::unique_ptr<io::viewer::ViewerChannels> viewer_;  // the viewer channels (viewer: true), after the topics
+    std::vector<io::viewer::ViewerMessage> viewer_out_;
+    std::unique_ptr<io::recording::RecordingWriter> writer_;  // opened at the first step (run.yaml is written by then)
+    framework::RunInfo run_;
     std::string dir_;
     std::uint64_t decimation_{1};
     std::size_t chunk_bytes_{1u << 20};
     bool finished_{false};
 };
 
-void register_recorder(runtime::ComponentRegistry& reg);
+void register_recorder(framework::ComponentRegistry& reg);
 
 }  // namespace gdnav::recorder

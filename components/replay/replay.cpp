@@ -11,18 +11,18 @@
 namespace gdnav::replay {
 
 namespace fs = std::filesystem;
-using recorder::digest_hex;
-using recorder::DigestFile;
-using recorder::known_topics_list;
-using recorder::read_digest_file;
-using recorder::read_recording;
-using recorder::RecordEntry;
-using recorder::resolve_topic;
+using io::recording::digest_hex;
+using io::recording::DigestFile;
+using io::recording::known_topics_list;
+using io::recording::read_digest_file;
+using io::recording::read_recording;
+using io::recording::RecordEntry;
+using io::recording::resolve_topic;
 
 // An output of a type chosen at configure time: a buffer made by the topic's MessageOps.
-class Replay::RecordedOutput final : public runtime::OutputBase {
+class Replay::RecordedOutput final : public framework::OutputBase {
 public:
-    RecordedOutput(Component& owner, const std::string& topic, const runtime::MessageOps& ops)
+    RecordedOutput(Component& owner, const std::string& topic, const msg::MessageOps& ops)
         : OutputBase(owner, topic, ops), value_(ops.create()) {}
     ~RecordedOutput() override { ops().destroy(value_); }
     [[nodiscard]] void* data() override { return value_; }
@@ -38,7 +38,7 @@ namespace {
 
 // True when the sample of `e` carries exactly the stamp time this run gives its step (t0_s + k dt_s): the stamp is
 // rewritten with the run's time and the encodings compared, so no per-type accessor is needed.
-bool stamped_on_run_grid(const TopicRecord& r, const RecordEntry& e, const runtime::RunInfo& run, SampleDecoder& dec,
+bool stamped_on_run_grid(const TopicRecord& r, const RecordEntry& e, const framework::RunInfo& run, SampleDecoder& dec,
                          void* scratch, void* restamped) {
     if (!dec.decode(&r.bytes[e.offset], e.size, scratch)) return false;
     if (r.ops->step_of(scratch) == UINT64_MAX) return true;  // unstamped type: nothing to compare
@@ -52,7 +52,7 @@ bool stamped_on_run_grid(const TopicRecord& r, const RecordEntry& e, const runti
 
 }  // namespace
 
-void Replay::configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream&) {
+void Replay::configure(const config::Config& cfg, const framework::RunInfo& run, rnd::Stream&) {
     const fs::path dir = cfg.get_string("record");
     const auto names = cfg.get_strings("topics");
     if (names.empty()) cfg.fail("topics", "at least one topic is required");
@@ -74,7 +74,7 @@ void Replay::configure(const config::Config& cfg, const runtime::RunInfo& run, r
         if (!seen.insert(topic).second) cfg.fail("topics", "topic '" + topic + "' is listed twice");
         topics.push_back(topic);
     }
-    recorder::Recording recording;
+    io::recording::Recording recording;
     try {
         recording = read_recording(dir, topics);
     } catch (const std::runtime_error& e) {
@@ -123,7 +123,7 @@ void Replay::configure(const config::Config& cfg, const runtime::RunInfo& run, r
     cfg.finish();
 }
 
-void Replay::step(const runtime::StepContext& ctx) {
+void Replay::step(const framework::StepContext& ctx) {
     if (!reported_) {
         reported_ = true;
         for (const auto& tr : tracks_)
@@ -143,9 +143,9 @@ void Replay::step(const runtime::StepContext& ctx) {
     }
 }
 
-void register_replay(runtime::ComponentRegistry& reg) {
+void register_replay(framework::ComponentRegistry& reg) {
     reg.add("replay", "publishes recorded topics (<record>/run.mcap) at their recorded steps (docs/replay.md)",
-            runtime::make_factory<Replay>());
+            framework::make_factory<Replay>());
 }
 
 }  // namespace gdnav::replay

@@ -25,15 +25,15 @@
 namespace gdnav::replay {
 
 // The record files are the recorder's format (common/io/recording/record_file.hpp).
-using recorder::SampleDecoder;
-using recorder::TopicRecord;
+using io::recording::SampleDecoder;
+using io::recording::TopicRecord;
 
-class Replay final : public runtime::Component {
+class Replay final : public framework::Component {
 public:
     explicit Replay(std::string name);
     ~Replay() override;
-    void configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream& stream) override;
-    void step(const runtime::StepContext& ctx) override;
+    void configure(const config::Config& cfg, const framework::RunInfo& run, rnd::Stream& stream) override;
+    void step(const framework::StepContext& ctx) override;
 
 private:
     class RecordedOutput;
@@ -49,6 +49,6 @@ private:
     bool reported_{false};
 };
 
-void register_replay(runtime::ComponentRegistry& reg);
+void register_replay(framework::ComponentRegistry& reg);
 
 }  // namespace gdnav::replay

@@ -13,8 +13,8 @@ namespace topics = gdnav::topics;
 
 namespace {
 
-using runtime::to_array;
-using runtime::to_vec3;
+using framework::to_array;
+using framework::to_vec3;
 
 struct Inertial {
     using Model = InertialSensors;
@@ -37,8 +37,8 @@ struct Inertial {
     // The fine alignment, from the true attitude and the sensors' own errors at t0.
     static void align(const AlignmentErrors& e, const msg::Truth& t, const ImuMeasurement& m, rnd::Stream& stream,
                       Sample& o) {
-        const ImuAlignment a = align_imu(e, runtime::to_quat(t.q_nb()), m.e_gyr_rps, m.e_acc_mps2, stream);
-        o.align_q_nb() = runtime::to_array(a.q_nb);
+        const ImuAlignment a = align_imu(e, framework::to_quat(t.q_nb()), m.e_gyr_rps, m.e_acc_mps2, stream);
+        o.align_q_nb() = framework::to_array(a.q_nb);
         o.align_att_sigma_rad(a.att_sigma_rad);
         o.align_gyr_err_rps() = to_array(a.gyr_err_rps);
         o.align_gyr_err_sigma_rps() = to_array(a.gyr_err_sigma_rps);
@@ -55,7 +55,7 @@ struct Magnetic {
     static void apply_overrides(const config::Config& cfg, SensorSuiteParams& s) {
         override_grade(cfg, "grade", "magnetometers", s.mag.grade, s.mag_grade, parse_mag_grade);
     }
-    static MagTruth truth(const msg::Truth& t) { return {runtime::to_quat(t.q_nb()), to_vec3(t.b_n_nT())}; }
+    static MagTruth truth(const msg::Truth& t) { return {framework::to_quat(t.q_nb()), to_vec3(t.b_n_nT())}; }
     static void write(const MagMeasurement& m, Sample& o) { o.b_b_nT() = to_array(m.b_b_nT); }
     // Calibration and magnetic survey: the sensors' errors and the field's deviation from the model at t0.
     static void align(const AlignmentErrors& e, const msg::Truth& t, const MagMeasurement& m, rnd::Stream& stream,
@@ -122,13 +122,13 @@ struct Gnss {
 };
 
 template <class Group>
-runtime::ComponentRegistry::Factory factory() {
-    return runtime::make_factory<SensorGroupComponent<Group>>();
+framework::ComponentRegistry::Factory factory() {
+    return framework::make_factory<SensorGroupComponent<Group>>();
 }
 
 }  // namespace
 
-void register_sensor_components(runtime::ComponentRegistry& reg) {
+void register_sensor_components(framework::ComponentRegistry& reg) {
     reg.add("sensors_inertial", "gyroscopes + accelerometers: Truth -> ImuSample", factory<Inertial>());
     reg.add("sensors_magnetic", "magnetometers: Truth -> MagSample", factory<Magnetic>());
     reg.add("sensors_air", "Pitot TAS + AOA/AOS vanes: Truth -> AirSample", factory<Air>());

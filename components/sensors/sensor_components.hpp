@@ -15,6 +15,6 @@
 
 namespace gdnav::sensors {
 
-void register_sensor_components(runtime::ComponentRegistry& reg);
+void register_sensor_components(framework::ComponentRegistry& reg);
 
 }  // namespace gdnav::sensors

@@ -24,7 +24,7 @@ namespace gdnav::sensors {
 
 // The suite file named in a sensor component's section (relative to config/).
 inline std::filesystem::path suite_file(const config::Config& cfg) {
-    return cfg.get_file("suite", "sensors/suite.yaml", runtime::config_dir());
+    return cfg.get_file("suite", "sensors/suite.yaml", framework::config_dir());
 }
 
 // Grade override: re-reads one group's grade file from the suite's folder when the section names one under `key`.
@@ -36,10 +36,10 @@ void override_grade(const config::Config& cfg, const char* key, const char* grou
 }
 
 template <class Group>
-class SensorGroupComponent final : public runtime::Component {
+class SensorGroupComponent final : public framework::Component {
 public:
     using Component::Component;
-    void configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream& stream) override {
+    void configure(const config::Config& cfg, const framework::RunInfo& run, rnd::Stream& stream) override {
         SensorSuiteParams s = load_sensor_suite(suite_file(cfg));
         s.inertial.dt_s = run.dt_s;
         s.mag.dt_s = run.dt_s;
@@ -53,7 +53,7 @@ public:
             aligned_ = false;
         }
     }
-    void step(const runtime::StepContext& ctx) override {
+    void step(const framework::StepContext& ctx) override {
         if (!truth_.available()) return;  // no truth sample (a fault upstream): hold the last measurement
         const msg::Truth& t = truth_.get();
         const auto m = model_.measure(ctx.k, ctx.t_s, Group::truth(t));
@@ -70,8 +70,8 @@ public:
 private:
     static constexpr bool kAligns = requires { &Group::align; };
 
-    runtime::Input<msg::Truth> truth_{*this, topics::kTruth};
-    runtime::Output<typename Group::Sample> out_{*this, Group::kTopic};
+    framework::Input<msg::Truth> truth_{*this, topics::kTruth};
+    framework::Output<typename Group::Sample> out_{*this, Group::kTopic};
     typename Group::Model model_;
     AlignmentErrors align_errors_;
     rnd::Stream align_stream_;

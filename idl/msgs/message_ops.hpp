@@ -13,7 +13,7 @@ namespace eprosima::fastdds::dds {
 class TopicDataType;
 }
 
-namespace gdnav::runtime {
+namespace gdnav::msg {
 
 struct MessageOps {
     const char* type_name;
@@ -39,4 +39,10 @@ struct MessageOps {
 template <class T>
 const MessageOps& message_ops();
 
+}  // namespace gdnav::msg
+
+// Their names in gdnav::runtime, kept for existing external members (framework/compat.hpp, docs/external.md).
+namespace gdnav::runtime {
+using ::gdnav::msg::message_ops;
+using ::gdnav::msg::MessageOps;
 }  // namespace gdnav::runtime

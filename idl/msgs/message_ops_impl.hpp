@@ -11,7 +11,7 @@
 
 #include "msgs/message_ops.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::msg {
 
 template <class T>
 struct PubSubTypeOf;  // specialised by GDNAV_DECLARE_MESSAGE
@@ -88,12 +88,12 @@ const MessageOps& message_ops() {
     return detail::make_ops<T>();
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::msg
 
 #define GDNAV_DECLARE_MESSAGE(T, PS)                                    \
     template <>                                                         \
-    struct gdnav::runtime::PubSubTypeOf<T> {                            \
+    struct gdnav::msg::PubSubTypeOf<T> {                                \
         using type = PS;                                                \
         static constexpr const char* name = #T;                         \
     };                                                                  \
-    template const gdnav::runtime::MessageOps& gdnav::runtime::message_ops<T>();
+    template const gdnav::msg::MessageOps& gdnav::msg::message_ops<T>();

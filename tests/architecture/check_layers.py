@@ -17,7 +17,13 @@ Layers, by folder (lowest first; a layer may use those listed for it):
 Within the models and components layers, a component's files include and link only their own component's (its
 folder under components/) and the rooms every component shares (SHARED_ROOMS); the GNC types two components both
 use live in the core (common/core/gnc). Also: framework/component.hpp (what every component includes) compiles
-without any Fast DDS header."""
+without any Fast DDS header.
+
+Namespaces (docs/architecture.md, "Namespaces"): every `namespace gdnav...` a product file declares is its folder's
+(expected_namespaces), with three documented exceptions: the compatibility namespace gdnav::runtime of existing
+external members (COMPAT_FILES), the aliases `namespace gdnav { namespace X = core::X; }` of the core headers, and
+blocks of using-declarations only in common/core/gnc that keep the shared GNC types' names in the components'
+namespaces. No other product code names gdnav::runtime."""
 import os
 import re
 import subprocess
@@ -41,6 +47,13 @@ SHARED_ROOMS = {'gnc_inputs'}
 # Files generated at build time from the IDL (fastddsgen, cmake/GdnavIdl.cmake): the message layer.
 GENERATED = re.compile(r'^[A-Za-z_]+(PubSubTypes)?\.h$')
 SOURCE_EXT = ('.cpp', '.hpp', '.h')
+# The namespace of each component, by its folder under components/ (gdnav::<folder> unless listed).
+COMPONENT_NAMESPACES = {'flight_physics': 'physics', 'gnc_inputs': 'guidance'}
+# The namespaces of the core's folders (gdnav::core::<folder> unless listed) and of the launcher's rooms.
+CORE_NAMESPACES = {'atmosphere': 'atm', 'random': 'rnd'}
+LAUNCH_NAMESPACES = {'plan': 'deploy'}
+# The files that declare the compatibility namespace gdnav::runtime (docs/external.md, "Namespaces").
+COMPAT_FILES = {'common/framework/compat.hpp', 'common/dds/compat.hpp', 'idl/msgs/message_ops.hpp'}
 
 
 def layer_of(rel):
@@ -180,10 +193,95 @@ def check_component_header(root, generated):
     return [f'framework/component.hpp pulls Fast DDS headers: {dds[0]} ...'] if dds else []
 
 
+def expected_namespaces(rel):
+    """The namespaces (each with those nested in it) a product file REL may declare; None: not checked."""
+    parts = rel.split('/')
+    sub = parts[2] if len(parts) > 3 else None  # the room: common/<layer>/<room>/<file>
+    if parts[0] == 'common':
+        layer = parts[1]
+        if layer == 'core':
+            return [f'gdnav::core::{CORE_NAMESPACES.get(sub, sub)}'] if sub else ['gdnav::core']
+        if layer in ('framework', 'dds'):
+            return [f'gdnav::{layer}']
+        if layer == 'io':
+            return [f'gdnav::io::{sub}'] if sub else ['gdnav::io']
+        if layer == 'launch':
+            return [f'gdnav::launch::{LAUNCH_NAMESPACES.get(sub, sub)}'] if sub else ['gdnav::launch']
+        if layer == 'client':
+            return [f'gdnav::client::{sub}'] if sub in ('python', 'embed') else ['gdnav::client']
+        return None
+    if parts[0] == 'components' and len(parts) > 2:
+        return [f'gdnav::{COMPONENT_NAMESPACES.get(parts[1], parts[1])}']
+    return {'idl': ['gdnav::msg', 'gdnav::topics'], 'scenarios': ['gdnav::scenario'], 'app': ['gdnav::cli']}.get(parts[0])
+
+
+def code_only(text):
+    """TEXT with comments and string literals blanked (line numbers kept)."""
+    pat = re.compile(r"""//[^\n]*|/\*.*?\*/|R"([^(\s]*)\(.*?\)\1"|"(?:\\.|[^"\\\n])*"|'(?:\\.|[^'\\\n])+'""", re.S)
+    return pat.sub(lambda m: re.sub(r'[^\n]', ' ', m.group(0)), text)
+
+
+CORE_ALIAS = re.compile(r'namespace\s+gdnav\s*\{\s*namespace\s+(\w+)\s*=\s*core::(\w+)\s*;\s*\}')
+
+
+def declared_namespaces(text):
+    """(line, full name, body) of every named namespace block of TEXT (code only), nested names joined."""
+    out, stack = [], []
+    for m in re.finditer(r'\bnamespace\s+((?:::)?\w+(?:\s*::\s*\w+)*)\s*\{|\{|\}', text):
+        tok = m.group(0)
+        if m.group(1):
+            name = re.sub(r'\s+', '', m.group(1)).lstrip(':')
+            full = '::'.join([f for f in stack if f] + [name])
+            stack.append(name)
+            out.append([text.count('\n', 0, m.start()) + 1, full, m.end(), None])
+        elif tok == '{':
+            stack.append(None)
+        elif stack:
+            name = stack.pop()
+            if name is not None:
+                for entry in reversed(out):
+                    if entry[3] is None and entry[1].endswith(name):
+                        entry[3] = text[entry[2]:m.start()]
+                        break
+    return [(line, full, body or '') for line, full, _, body in out]
+
+
+def check_namespaces(root):
+    errors = []
+    for rel in product_files(root):
+        allowed = expected_namespaces(rel)
+        if allowed is None:
+            continue
+        with open(os.path.join(root, rel), encoding='utf-8') as f:
+            text = code_only(f.read())
+        for m in CORE_ALIAS.finditer(text):
+            if not rel.startswith('common/core/') or m.group(1) != m.group(2):
+                errors.append(f'{rel}: namespace alias gdnav::{m.group(1)}: only the core headers keep short names')
+        text = CORE_ALIAS.sub(lambda m: re.sub(r'[^\n]', ' ', m.group(0)), text)
+        for line, full, body in declared_namespaces(text):
+            if full != 'gdnav' and not full.startswith('gdnav::'):
+                continue
+            if full == 'gdnav::runtime' or full.startswith('gdnav::runtime::'):
+                if rel not in COMPAT_FILES:
+                    errors.append(f'{rel}:{line}: namespace {full}: only the compatibility headers declare it')
+                continue
+            if rel.startswith('common/core/gnc/') and body.strip() and \
+                    all(s.strip().startswith('using ') for s in body.split(';') if s.strip()):
+                continue  # the shared GNC types' names in a component's namespace
+            if not any(full == a or full.startswith(a + '::') or (a.startswith(full + '::') and body.strip() == '')
+                       for a in allowed):
+                errors.append(f'{rel}:{line}: namespace {full} is not of its folder (expected {" or ".join(allowed)})')
+        for n, line in enumerate(text.splitlines(), 1):
+            if rel not in COMPAT_FILES and re.search(r'(?<![\w:])(?:::)?(?:gdnav::runtime\b|runtime::)', line):
+                errors.append(f'{rel}:{n}: names gdnav::runtime (kept for existing external members only)')
+    return errors
+
+
 def main():
     root = os.path.abspath(sys.argv[1])
     generated = sys.argv[2] if len(sys.argv) > 2 else None
-    errors = check_includes(root) + check_links(root) + check_component_header(root, generated)
+    errors = check_includes(root) + check_links(root) + check_component_header(root, generated) + \
+        check_namespaces(root)
     for e in errors:
         print(e)
     n_files = sum(1 for _ in product_files(root))

@@ -15,6 +15,6 @@ inline constexpr const char* kMeas = "chain/meas";
 inline constexpr const char* kEstimate = "chain/estimate";
 inline constexpr const char* kControl = "chain/control";
 
-void register_chain(runtime::ComponentRegistry& reg);  // components and topics
+void register_chain(framework::ComponentRegistry& reg);  // components and topics
 
 }  // namespace gdnav::testchain

@@ -4,8 +4,8 @@
 #include "recorder.hpp"
 
 int main(int argc, char** argv) {
-    gdnav::runtime::ComponentRegistry reg;
+    gdnav::framework::ComponentRegistry reg;
     gdnav::recorder::register_recorder(reg);
     gdnav::testchain::register_chain(reg);
-    return gdnav::app::cli_main(argc, argv, reg, "gdnav-testchain");
+    return gdnav::cli::cli_main(argc, argv, reg, "gdnav-testchain");
 }

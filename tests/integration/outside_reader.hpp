@@ -25,14 +25,14 @@ namespace gdnav::testing {
 // A reader outside the lockstep may not be scheduled for longer than the profile's 72 samples take to arrive on a
 // loaded machine: its receive thread then replaces samples that the test has not taken yet. The run's writers never
 // wait for it, so what it must keep is its own affair.
-inline eprosima::fastdds::dds::DataReader* whole_run_reader(runtime::DdsContext& dds, const std::string& topic,
-                                                            const runtime::MessageOps& ops, std::int32_t samples) {
+inline eprosima::fastdds::dds::DataReader* whole_run_reader(dds::DdsContext& dds, const std::string& topic,
+                                                            const msg::MessageOps& ops, std::int32_t samples) {
     using namespace eprosima::fastdds::dds;
     // The context's reader registers the type and creates the topic; it is then replaced by the deep one.
-    DataReader* shallow = dds.reader(topic, ops, runtime::kDataReaderProfile);
+    DataReader* shallow = dds.reader(topic, ops, dds::kDataReaderProfile);
     auto* subscriber = const_cast<Subscriber*>(shallow->get_subscriber());
     DataReaderQos q;
-    if (subscriber->get_datareader_qos_from_profile(runtime::kDataReaderProfile, q) !=
+    if (subscriber->get_datareader_qos_from_profile(dds::kDataReaderProfile, q) !=
             eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK ||
         subscriber->delete_datareader(shallow) != eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK)
         return nullptr;
@@ -45,7 +45,7 @@ inline eprosima::fastdds::dds::DataReader* whole_run_reader(runtime::DdsContext&
 // Calls on_sample(the sample, of ops' type) for each sample; returns the launcher's exit code (-1: still running
 // after timeout_s plus 5 s).
 inline int read_samples_while_running(pid_t launcher, eprosima::fastdds::dds::DataReader& reader,
-                                      const runtime::MessageOps& ops, double timeout_s,
+                                      const msg::MessageOps& ops, double timeout_s,
                                       const std::function<void(const void*)>& on_sample) {
     using eprosima::fastdds::dds::SampleInfo;
     void* sample = ops.create();
@@ -72,7 +72,7 @@ inline int read_samples_while_running(pid_t launcher, eprosima::fastdds::dds::Da
 
 // As read_samples_while_running, with on_step(step of the sample).
 inline int read_while_running(pid_t launcher, eprosima::fastdds::dds::DataReader& reader,
-                              const runtime::MessageOps& ops, double timeout_s,
+                              const msg::MessageOps& ops, double timeout_s,
                               const std::function<void(std::uint64_t)>& on_step) {
     return read_samples_while_running(launcher, reader, ops, timeout_s,
                                       [&](const void* sample) { on_step(ops.step_of(sample)); });

@@ -13,9 +13,9 @@ namespace gdnav::testing {
 
 template <class T>
 std::vector<T> read_records(const std::filesystem::path& out_dir, const std::string& topic) {
-    runtime::register_gdnav_topics();
-    const recorder::TopicRecord r = recorder::read_topic_record(out_dir / "record", topic);
-    recorder::SampleDecoder decoder(*r.ops);
+    framework::register_gdnav_topics();
+    const io::recording::TopicRecord r = io::recording::read_topic_record(out_dir / "record", topic);
+    io::recording::SampleDecoder decoder(*r.ops);
     std::vector<T> out;
     for (const auto& e : r.entries) {
         T sample;

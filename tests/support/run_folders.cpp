@@ -18,7 +18,7 @@ fs::path temp_dir(const std::string& tag) {
 }
 
 std::string run_dir(const fs::path& batch, int i) {
-    return (batch / "runs" / app::run_dir_name(static_cast<std::uint64_t>(i))).string();
+    return (batch / "runs" / launch::batch::run_dir_name(static_cast<std::uint64_t>(i))).string();
 }
 
 }  // namespace gdnav::testing

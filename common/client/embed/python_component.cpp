@@ -18,13 +18,13 @@
 namespace py = pybind11;
 namespace fs = std::filesystem;
 
-namespace gdnav::pyembed {
+namespace gdnav::client::embed {
 
 namespace {
 
 // One interpreter per process, started by the first in-process member and never finalised (the process ends with
 // it). Python installs no signal handlers: SIGINT and SIGTERM stay gdnav's. The starting thread gives the GIL up;
-// every call into Python takes it (pyclient::StepCall), from whichever thread the executor runs the member in.
+// every call into Python takes it (python::StepCall), from whichever thread the executor runs the member in.
 void ensure_interpreter() {
     static std::once_flag once;
     std::call_once(once, [] {
@@ -53,10 +53,10 @@ PythonComponent& Host::comp() const {
     return *comp_;
 }
 
-std::shared_ptr<Port> Host::input(const std::string& topic, runtime::Lag lag) {
+std::shared_ptr<Port> Host::input(const std::string& topic, framework::Lag lag) {
     PythonComponent& c = comp();
     if (!c.declaring_) throw std::logic_error("Member.input(): declare ports in the class's constructor");
-    auto in = std::make_unique<runtime::InputBase>(c, topic, lag, runtime::require_topic(topic));
+    auto in = std::make_unique<framework::InputBase>(c, topic, lag, framework::require_topic(topic));
     auto port = std::make_shared<Port>(*in, c.state_);
     c.inputs_.push_back(std::move(in));
     return port;
@@ -65,19 +65,19 @@ std::shared_ptr<Port> Host::input(const std::string& topic, runtime::Lag lag) {
 std::shared_ptr<Port> Host::output(const std::string& topic) {
     PythonComponent& c = comp();
     if (!c.declaring_) throw std::logic_error("Member.output(): declare ports in the class's constructor");
-    auto out = std::make_unique<runtime::AnyOutput>(c, topic, runtime::require_topic(topic));
+    auto out = std::make_unique<framework::AnyOutput>(c, topic, framework::require_topic(topic));
     auto port = std::make_shared<Port>(*out);
     c.outputs_.push_back(std::move(out));
     return port;
 }
 
-void Host::publish_status(const std::string& message) { runtime::ExecutorAccess::publish_status(comp(), message); }
+void Host::publish_status(const std::string& message) { framework::ExecutorAccess::publish_status(comp(), message); }
 const std::string& Host::name() const { return comp().name(); }
 std::uint64_t Host::run_id() const { return comp().run_.run_index; }
 StepView Host::step_view() const { return comp().view_; }
 const StepCost& Host::cost() const { return comp().cost_; }
 
-PythonComponent::PythonComponent(std::string name, const runtime::ComponentRegistry& reg)
+PythonComponent::PythonComponent(std::string name, const framework::ComponentRegistry& reg)
     : Component(std::move(name)), reg_(reg) {}
 
 PythonComponent::~PythonComponent() {
@@ -97,7 +97,7 @@ void PythonComponent::fail(const std::string& what, const std::string& where) co
                               name() + "', class " + class_ + ")");
 }
 
-void PythonComponent::configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream&) {
+void PythonComponent::configure(const config::Config& cfg, const framework::RunInfo& run, rnd::Stream&) {
     file_ = cfg.get_string("file");
     class_ = cfg.get_string("class");
     const std::string replaces = cfg.get_string("replaces", "");
@@ -107,7 +107,7 @@ void PythonComponent::configure(const config::Config& cfg, const runtime::RunInf
     run_ = run;
     view_.dt_s = run.dt_s;
     if (!fs::is_regular_file(file_)) fail("no such file");
-    runtime::register_gdnav_topics();
+    framework::register_gdnav_topics();
     ensure_interpreter();
     {
         py::gil_scoped_acquire gil;
@@ -157,7 +157,7 @@ void PythonComponent::instantiate() {
         throw;
     }
     declaring_ = false;
-    const pyclient::ClassCallbacks cb = pyclient::class_callbacks(obj_);
+    const python::ClassCallbacks cb = python::class_callbacks(obj_);
     step_ = cb.step;
     finish_ = cb.finish;
 }
@@ -167,17 +167,17 @@ void PythonComponent::check_ports(const std::string& replaces) const {
     if (replaces.empty() || !reg_.has(replaces)) return;
     const auto original = reg_.create(replaces, name());
     std::set<std::string> want, have;
-    for (const runtime::OutputBase* o : original->outputs()) want.insert(o->topic());
-    for (const runtime::OutputBase* o : outputs()) have.insert(o->topic());
+    for (const framework::OutputBase* o : original->outputs()) want.insert(o->topic());
+    for (const framework::OutputBase* o : outputs()) have.insert(o->topic());
     if (want == have) return;
     fail("the class's outputs (" + join(have) + ") are not those of the member it replaces ('" + name() + "', type " +
          replaces + ": " + join(want) + ")");
 }
 
-void PythonComponent::step(const runtime::StepContext& ctx) {
+void PythonComponent::step(const framework::StepContext& ctx) {
     std::string failure;
     {
-        pyclient::StepCall call(cost_);
+        python::StepCall call(cost_);
         view_ = StepView{ctx.dt_s, ctx.last};
         state_->in_step = true;
         try {
@@ -205,4 +205,4 @@ void PythonComponent::finish(bool completed) {
     spdlog::info("member '{}': Python step callback (in process), {}", name(), cost_.text());
 }
 
-}  // namespace gdnav::pyembed
+}  // namespace gdnav::client::embed

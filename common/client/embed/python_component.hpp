@@ -13,11 +13,11 @@
 #include "client/python/port.hpp"
 #include "client/python/step_call.hpp"
 
-namespace gdnav::pyembed {
+namespace gdnav::client::embed {
 
-using pyclient::Port;
-using pyclient::StepCost;
-using pyclient::StepView;
+using python::Port;
+using python::StepCost;
+using python::StepView;
 
 class PythonComponent;
 
@@ -26,7 +26,7 @@ class PythonComponent;
 class Host {
 public:
     explicit Host(PythonComponent& c) : comp_(&c) {}
-    std::shared_ptr<Port> input(const std::string& topic, runtime::Lag lag);
+    std::shared_ptr<Port> input(const std::string& topic, framework::Lag lag);
     std::shared_ptr<Port> output(const std::string& topic);
     void publish_status(const std::string& message);
     [[nodiscard]] const std::string& name() const;
@@ -40,15 +40,15 @@ private:
     PythonComponent* comp_;
 };
 
-class PythonComponent final : public runtime::Component {
+class PythonComponent final : public framework::Component {
 public:
-    PythonComponent(std::string name, const runtime::ComponentRegistry& reg);
+    PythonComponent(std::string name, const framework::ComponentRegistry& reg);
     ~PythonComponent() override;
     PythonComponent(const PythonComponent&) = delete;
     PythonComponent& operator=(const PythonComponent&) = delete;
 
-    void configure(const config::Config& cfg, const runtime::RunInfo& run, rnd::Stream& stream) override;
-    void step(const runtime::StepContext& ctx) override;
+    void configure(const config::Config& cfg, const framework::RunInfo& run, rnd::Stream& stream) override;
+    void step(const framework::StepContext& ctx) override;
     void finish(bool completed) override;
 
 private:
@@ -58,14 +58,14 @@ private:
     // A ConfigError naming `where` (default: the file).
     [[noreturn]] void fail(const std::string& what, const std::string& where = "") const;
 
-    const runtime::ComponentRegistry& reg_;
+    const framework::ComponentRegistry& reg_;
     std::string file_, class_;
-    runtime::RunInfo run_;
+    framework::RunInfo run_;
     StepView view_;
     StepCost cost_;
-    std::shared_ptr<pyclient::StepState> state_ = std::make_shared<pyclient::StepState>();
-    std::vector<std::unique_ptr<runtime::InputBase>> inputs_;
-    std::vector<std::unique_ptr<runtime::OutputBase>> outputs_;
+    std::shared_ptr<python::StepState> state_ = std::make_shared<python::StepState>();
+    std::vector<std::unique_ptr<framework::InputBase>> inputs_;
+    std::vector<std::unique_ptr<framework::OutputBase>> outputs_;
     bool declaring_{false};
     std::shared_ptr<Host> host_;
     pybind11::object module_, obj_, finish_;
@@ -73,4 +73,4 @@ private:
     std::string module_name_;
 };
 
-}  // namespace gdnav::pyembed
+}  // namespace gdnav::client::embed

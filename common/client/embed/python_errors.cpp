@@ -2,7 +2,7 @@
 
 namespace py = pybind11;
 
-namespace gdnav::pyembed {
+namespace gdnav::client::embed {
 
 namespace {
 
@@ -43,4 +43,4 @@ std::string format_traceback(py::error_already_set& e) {
     return s;
 }
 
-}  // namespace gdnav::pyembed
+}  // namespace gdnav::client::embed

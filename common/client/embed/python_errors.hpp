@@ -4,7 +4,7 @@
 
 #include <pybind11/pybind11.h>
 
-namespace gdnav::pyembed {
+namespace gdnav::client::embed {
 
 struct PyErrorText {
     std::string where;  // "FILE:LINE" (LINE of the innermost frame in `file`; a SyntaxError's own file and line)
@@ -16,4 +16,4 @@ PyErrorText describe_error(pybind11::error_already_set& e, const std::string& fi
 // The exception's traceback as Python prints it (GIL held).
 std::string format_traceback(pybind11::error_already_set& e);
 
-}  // namespace gdnav::pyembed
+}  // namespace gdnav::client::embed

@@ -4,10 +4,10 @@
 // class: C}}}, framework/run_members.hpp). Only the program that hosts components links this (and libpython).
 #include "framework/registry.hpp"
 
-namespace gdnav::pyembed {
+namespace gdnav::client::embed {
 
 // Adds the component type `python_member`. `reg` must outlive the components it creates (the member checks its
 // ports against the type it replaces).
-void register_python_member(runtime::ComponentRegistry& reg);
+void register_python_member(framework::ComponentRegistry& reg);
 
-}  // namespace gdnav::pyembed
+}  // namespace gdnav::client::embed

@@ -2,7 +2,7 @@
 
 namespace py = pybind11;
 
-namespace gdnav::pyclient {
+namespace gdnav::client::python {
 
 ClassCallbacks class_callbacks(const py::handle& obj) {
     const std::string cls = py::str(py::type::handle_of(obj).attr("__qualname__"));
@@ -17,9 +17,9 @@ ClassCallbacks class_callbacks(const py::handle& obj) {
 }
 
 void bind_ports(py::module_& mod) {
-    py::enum_<runtime::Lag>(mod, "Lag", "input lag: Same = the sample of step k, Previous = of step k-1")
-        .value("Same", runtime::Lag::Same)
-        .value("Previous", runtime::Lag::Previous);
+    py::enum_<framework::Lag>(mod, "Lag", "input lag: Same = the sample of step k, Previous = of step k-1")
+        .value("Same", framework::Lag::Same)
+        .value("Previous", framework::Lag::Previous);
 
     py::class_<Port, std::shared_ptr<Port>>(mod, "Port", "an input or output of a member (see the module docstring)")
         .def("__getitem__", &Port::get, py::arg("field"))
@@ -34,4 +34,4 @@ void bind_ports(py::module_& mod) {
         .def("__repr__", [](const Port& p) { return std::string(p.is_output() ? "<output " : "<input ") + p.topic() + ">"; });
 }
 
-}  // namespace gdnav::pyclient
+}  // namespace gdnav::client::python

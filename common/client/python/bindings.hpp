@@ -11,7 +11,7 @@
 #include "port.hpp"
 #include "step_call.hpp"
 
-namespace gdnav::pyclient {
+namespace gdnav::client::python {
 
 // What a step callback sees of the current step.
 struct StepView {
@@ -36,7 +36,7 @@ void bind_ports(pybind11::module_& mod);
 template <class M, class... Options>
 void bind_member_calls(pybind11::class_<M, Options...>& cls) {
     namespace py = pybind11;
-    cls.def("input", &M::input, py::arg("topic"), py::arg("lag") = runtime::Lag::Same, py::keep_alive<0, 1>())
+    cls.def("input", &M::input, py::arg("topic"), py::arg("lag") = framework::Lag::Same, py::keep_alive<0, 1>())
         .def("output", &M::output, py::arg("topic"), py::keep_alive<0, 1>())
         .def("publish_status", &M::publish_status, py::arg("message"))
         .def_property_readonly("name", [](const M& m) { return m.name(); })
@@ -46,4 +46,4 @@ void bind_member_calls(pybind11::class_<M, Options...>& cls) {
         .def_property_readonly("step_cost", [](const M& m) { return m.cost().as_dict(); });
 }
 
-}  // namespace gdnav::pyclient
+}  // namespace gdnav::client::python

@@ -7,8 +7,8 @@
 namespace py = pybind11;
 using gdnav::client::Lag;
 using gdnav::client::Options;
-using gdnav::pyclient::Port;
-using gdnav::pyclient::PyMember;
+using gdnav::client::python::Port;
+using gdnav::client::python::PyMember;
 
 namespace {
 
@@ -60,7 +60,7 @@ cost per call (GIL acquisition included) is logged after the run and kept in Mem
 
 PYBIND11_MODULE(gdnav_client, mod) {
     mod.doc() = kDoc;
-    gdnav::pyclient::bind_ports(mod);
+    gdnav::client::python::bind_ports(mod);
 
     py::class_<PyMember> member(mod, "Member", "a lockstep member of a gdnav run (see the module docstring)");
     member.def(py::init([](std::string name, int domain, std::uint64_t run, bool free_running, std::string dds_profile,
@@ -86,8 +86,8 @@ PYBIND11_MODULE(gdnav_client, mod) {
         .def_property_readonly("domain", [](const PyMember& m) { return m.options().domain_id; })
         .def_property_readonly("free_running", [](const PyMember& m) { return m.options().free_running; })
         .def_property_readonly("extra_args", &PyMember::extra_args);
-    gdnav::pyclient::bind_member_calls(member);
-    mod.def("run_class", &gdnav::pyclient::run_class, py::arg("cls"), py::arg("argv"), py::arg("default_name"),
+    gdnav::client::python::bind_member_calls(member);
+    mod.def("run_class", &gdnav::client::python::run_class, py::arg("cls"), py::arg("argv"), py::arg("default_name"),
             "run a member class (docs/python.md) as this process's member: m = Member.from_args(argv, "
             "default_name); obj = cls(m); obj.step(k, t_s) every step, obj.finish(completed) if defined; returns "
             "m.run()");

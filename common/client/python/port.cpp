@@ -8,7 +8,7 @@
 
 namespace py = pybind11;
 
-namespace gdnav::pyclient {
+namespace gdnav::client::python {
 
 namespace {
 
@@ -60,13 +60,13 @@ Port::Port(std::string topic, const char* type_name) : topic_(std::move(topic)),
     for (std::size_t i = 0; i < table_->count; ++i) by_name_.emplace(table_->fields[i].name, &table_->fields[i]);
 }
 
-Port::Port(const runtime::InputBase& in, std::shared_ptr<const StepState> state)
+Port::Port(const framework::InputBase& in, std::shared_ptr<const StepState> state)
     : Port(in.topic(), in.ops().type_name) {
     in_ = &in;
     state_ = std::move(state);
 }
 
-Port::Port(runtime::OutputBase& out) : Port(out.topic(), out.ops().type_name) { out_ = &out; }
+Port::Port(framework::OutputBase& out) : Port(out.topic(), out.ops().type_name) { out_ = &out; }
 
 bool Port::available() const { return out_ || (state_->in_step && in_->available()); }
 
@@ -211,4 +211,4 @@ void Port::update(const py::dict& values) {
     }
 }
 
-}  // namespace gdnav::pyclient
+}  // namespace gdnav::client::python

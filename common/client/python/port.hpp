@@ -9,12 +9,12 @@
 #include "framework/fields/field_table.hpp"
 #include "framework/component.hpp"
 
-namespace gdnav::pyclient {
+namespace gdnav::client::python {
 
-using runtime::fields::Field;
-using runtime::fields::Kind;
-using runtime::fields::TypeFields;
-using runtime::fields::find_type_fields;
+using framework::fields::Field;
+using framework::fields::Kind;
+using framework::fields::TypeFields;
+using framework::fields::find_type_fields;
 
 // Shared by a member and its ports: inputs are readable only while the step callback runs (the host rebinds and
 // frees their samples between steps).
@@ -24,8 +24,8 @@ struct StepState {
 
 class Port {
 public:
-    Port(const runtime::InputBase& in, std::shared_ptr<const StepState> state);
-    explicit Port(runtime::OutputBase& out);
+    Port(const framework::InputBase& in, std::shared_ptr<const StepState> state);
+    explicit Port(framework::OutputBase& out);
 
     [[nodiscard]] const std::string& topic() const { return topic_; }
     [[nodiscard]] bool is_output() const { return out_ != nullptr; }
@@ -47,12 +47,12 @@ private:
     std::string topic_;
     const TypeFields* table_;
     std::unordered_map<std::string, const Field*> by_name_;
-    const runtime::InputBase* in_{nullptr};
-    runtime::OutputBase* out_{nullptr};
+    const framework::InputBase* in_{nullptr};
+    framework::OutputBase* out_{nullptr};
     std::shared_ptr<const StepState> state_;
 };
 
 // "double[3]", "unsigned long", "string<64>", "enum {A, B}".
 std::string type_text(const Field& f);
 
-}  // namespace gdnav::pyclient
+}  // namespace gdnav::client::python

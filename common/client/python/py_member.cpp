@@ -8,7 +8,7 @@
 
 namespace py = pybind11;
 
-namespace gdnav::pyclient {
+namespace gdnav::client::python {
 
 namespace {
 
@@ -122,4 +122,4 @@ int run_class(const py::object& cls, const std::vector<std::string>& argv, const
     return member.run();
 }
 
-}  // namespace gdnav::pyclient
+}  // namespace gdnav::client::python

@@ -13,7 +13,7 @@
 #include "port.hpp"
 #include "step_call.hpp"
 
-namespace gdnav::pyclient {
+namespace gdnav::client::python {
 
 class PyMember {
 public:
@@ -54,4 +54,4 @@ private:
 // gdnav_client.run_class: a member class as this process's member (docs/python.md, "Member classes").
 int run_class(const pybind11::object& cls, const std::vector<std::string>& argv, const std::string& default_name);
 
-}  // namespace gdnav::pyclient
+}  // namespace gdnav::client::python

@@ -6,7 +6,7 @@
 
 #include <spdlog/fmt/fmt.h>
 
-namespace gdnav::pyclient {
+namespace gdnav::client::python {
 
 namespace {
 
@@ -75,4 +75,4 @@ void release_kept_thread_states() {
     kept_states().clear();
 }
 
-}  // namespace gdnav::pyclient
+}  // namespace gdnav::client::python

@@ -8,7 +8,7 @@
 
 #include <pybind11/pybind11.h>
 
-namespace gdnav::pyclient {
+namespace gdnav::client::python {
 
 // Cost of the Python step callback per call: wall time (what the run waits for, including time the process was
 // preempted) and the calling thread's CPU time (the callback's own work), both with the GIL acquisition.
@@ -44,4 +44,4 @@ private:
 // Deletes the thread states StepCall kept (GIL held; the threads they belong to have ended or will not call again).
 void release_kept_thread_states();
 
-}  // namespace gdnav::pyclient
+}  // namespace gdnav::client::python

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace gdnav::atm {
+namespace gdnav::core::atm {
 
 namespace {
 constexpr double kExpP = -kG0_mps2 / (kR_JpkgK * kBetaT_Kpm);  // exponent of p(Hp), about 5.2559
@@ -93,4 +93,4 @@ AirProperties air_properties_msl(double H_m, double dT_K, double Hp_msl_m, doubl
     return a;
 }
 
-}  // namespace gdnav::atm
+}  // namespace gdnav::core::atm

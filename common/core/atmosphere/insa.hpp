@@ -15,7 +15,7 @@
 //   pitot        : p_t = p (1 + (kappa-1)/2 M^2)^(kappa/(kappa-1)),  M = V / a;
 //                  V = sqrt(2 kappa/(kappa-1) (p/rho) [(p_t/p)^((kappa-1)/kappa) - 1])
 // Constants: R = 287.05287 J/(kg K), kappa = 1.4, bT = -6.5e-3 K/m, T0 = 288.15 K, p0 = 101325 Pa, g0 = 9.80665.
-namespace gdnav::atm {
+namespace gdnav::core::atm {
 
 constexpr double kR_JpkgK = 287.05287;
 constexpr double kKappa = 1.4;
@@ -63,4 +63,5 @@ AirProperties air_properties(double H_m, double dT_K, double dp_Pa,
                              double Hp_guess_m = std::numeric_limits<double>::quiet_NaN());
 AirProperties air_properties_msl(double H_m, double dT_K, double Hp_msl_m, double Hp_guess_m);
 
-}  // namespace gdnav::atm
+}  // namespace gdnav::core::atm
+namespace gdnav { namespace atm = core::atm; }  // the short name (docs/architecture.md, "Namespaces")

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-namespace gdnav::atm {
+namespace gdnav::core::atm {
 
 double ramp_value(double t, double t0, double t1, double v0, double v1) {
     if (t <= t0) return v0;
@@ -38,4 +38,4 @@ Offsets OffsetsRamp::at(double t_s) const {
             ramp_value(t_s, p_.t_ini_dp_s, p_.t_end_dp_s, p_.dp_ini_Pa, p_.dp_end_Pa)};
 }
 
-}  // namespace gdnav::atm
+}  // namespace gdnav::core::atm

@@ -13,7 +13,7 @@
 #include "config/number_keys.hpp"
 #include "random/ramp_times.hpp"
 
-namespace gdnav::atm {
+namespace gdnav::core::atm {
 
 struct OffsetsRampParams {
     double dT_ini_K{0.0};
@@ -69,4 +69,5 @@ private:
 // Piecewise-linear ramp: v0 before t0, v1 after t1, linear in between (t1 <= t0 means a step at t0).
 double ramp_value(double t, double t0, double t1, double v0, double v1);
 
-}  // namespace gdnav::atm
+}  // namespace gdnav::core::atm
+namespace gdnav { namespace atm = core::atm; }  // the short name (docs/architecture.md, "Namespaces")

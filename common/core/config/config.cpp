@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace gdnav::config {
+namespace gdnav::core::config {
 
 namespace {
 std::string one_line(const std::string& s) {
@@ -314,4 +314,4 @@ void Config::check_unread(const YAML::Node& node, const std::string& path) const
 
 void Config::finish() const { check_unread(node_, path_); }
 
-}  // namespace gdnav::config
+}  // namespace gdnav::core::config

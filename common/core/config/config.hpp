@@ -19,7 +19,7 @@
 #include <Eigen/Core>
 #include <yaml-cpp/yaml.h>
 
-namespace gdnav::config {
+namespace gdnav::core::config {
 
 // The message is always one line: control characters (a newline in a quoted value or key, raw bytes of a garbage
 // file quoted by the YAML parser) are written as \n, \r, \t or \xNN.
@@ -102,4 +102,5 @@ private:
     std::string path_;
 };
 
-}  // namespace gdnav::config
+}  // namespace gdnav::core::config
+namespace gdnav { namespace config = core::config; }  // the short name (docs/architecture.md, "Namespaces")

@@ -6,7 +6,7 @@
 
 #include "config/config.hpp"
 
-namespace gdnav::config {
+namespace gdnav::core::config {
 
 template <class P>
 struct NumberKey {
@@ -27,4 +27,5 @@ P read_number_keys(const Config& c, const std::array<NumberKey<P>, N>& keys) {
     return p;
 }
 
-}  // namespace gdnav::config
+}  // namespace gdnav::core::config
+namespace gdnav { namespace config = core::config; }  // the short name (docs/architecture.md, "Namespaces")

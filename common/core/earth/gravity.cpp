@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace gdnav::earth {
+namespace gdnav::core::earth {
 
 double normal_gravity_msl_mps2(double lat_rad) {
     const double s2 = std::sin(lat_rad) * std::sin(lat_rad);
@@ -40,4 +40,4 @@ Vec3 TrueGravity::apply(const Vec3& g_model_n) const {
     return tilt_ * (g_model_n * ((g + dg_mps2_) / g));
 }
 
-}  // namespace gdnav::earth
+}  // namespace gdnav::core::earth

@@ -12,7 +12,7 @@
 #include "earth/wgs84.hpp"
 #include "random/stream.hpp"
 
-namespace gdnav::earth {
+namespace gdnav::core::earth {
 
 double normal_gravity_msl_mps2(double lat_rad);
 double normal_gravity_mps2(double lat_rad, double h_m);
@@ -51,4 +51,5 @@ private:
     double dg_mps2_{0.0};
 };
 
-}  // namespace gdnav::earth
+}  // namespace gdnav::core::earth
+namespace gdnav { namespace earth = core::earth; }  // the short name (docs/architecture.md, "Namespaces")

@@ -1,6 +1,6 @@
 #include "earth/magnetic.hpp"
 
-namespace gdnav::earth {
+namespace gdnav::core::earth {
 
 MagneticModel::MagneticModel(const MagneticCorners& corners) : c_(corners), valid_(true) {}
 
@@ -36,4 +36,4 @@ Vec3 MagneticModel::field_n_nT(double lat_rad, double lon_rad) const {
            r2 * (c_.b_lr_nT + r1 * (c_.b_ur_nT - c_.b_lr_nT));
 }
 
-}  // namespace gdnav::earth
+}  // namespace gdnav::core::earth

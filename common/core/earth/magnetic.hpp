@@ -14,7 +14,7 @@
 #include "config/config.hpp"
 #include "earth/wgs84.hpp"
 
-namespace gdnav::earth {
+namespace gdnav::core::earth {
 
 struct MagneticCorners {
     double lat_min_rad{0.0};
@@ -48,4 +48,5 @@ private:
     bool valid_{false};
 };
 
-}  // namespace gdnav::earth
+}  // namespace gdnav::core::earth
+namespace gdnav { namespace earth = core::earth; }  // the short name (docs/architecture.md, "Namespaces")

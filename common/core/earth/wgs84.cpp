@@ -3,7 +3,7 @@
 #include <GeographicLib/Geocentric.hpp>
 #include <cmath>
 
-namespace gdnav::earth {
+namespace gdnav::core::earth {
 
 Radii radii_sc(double s, double c) {
     Radii r;
@@ -67,4 +67,4 @@ Vec3 transport_rate_n(double lat_rad, double h_m, const Vec3& v) {
 
 Vec3 coriolis_n(double lat_rad, const Vec3& v) { return 2.0 * earth_rate_n(lat_rad).cross(v); }
 
-}  // namespace gdnav::earth
+}  // namespace gdnav::core::earth

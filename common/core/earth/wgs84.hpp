@@ -15,7 +15,7 @@
 // Frames: n = local NED, e = ECEF. Angles in rad, lengths in m, velocities in m/s.
 #include "math/rotation.hpp"
 
-namespace gdnav::earth {
+namespace gdnav::core::earth {
 
 using math::Mat3;
 using math::Vec3;
@@ -75,4 +75,5 @@ Vec3 transport_rate_n_sc(const Radii& r, double sin_lat, double cos_lat, double 
 constexpr double geometric_from_geopotential(double H_m) { return kRadiusGeopot_m * H_m / (kRadiusGeopot_m - H_m); }
 constexpr double geopotential_from_geometric(double h_m) { return kRadiusGeopot_m * h_m / (kRadiusGeopot_m + h_m); }
 
-}  // namespace gdnav::earth
+}  // namespace gdnav::core::earth
+namespace gdnav { namespace earth = core::earth; }  // the short name (docs/architecture.md, "Namespaces")

@@ -6,7 +6,7 @@
 #include <cerrno>
 #include <cstring>
 
-namespace gdnav::files {
+namespace gdnav::core::files {
 
 WriteError::WriteError(const std::filesystem::path& file, const std::string& os_error, const std::string& context)
     : std::runtime_error(context + "cannot write " + file.string() + ": " + os_error),
@@ -49,4 +49,4 @@ void write_whole(const std::filesystem::path& file, std::string_view text, std::
     }
 }
 
-}  // namespace gdnav::files
+}  // namespace gdnav::core::files

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-namespace gdnav::files {
+namespace gdnav::core::files {
 
 // An output file the operating system would not let us write (full disk, file size limit, I/O error).
 class WriteError : public std::runtime_error {
@@ -33,4 +33,5 @@ void write_whole(const std::filesystem::path& file, std::string_view text, std::
 // Writes TEXT at the end of the open descriptor FD of FILE, all of it (retrying short writes); WriteError otherwise.
 void write_all(int fd, const std::filesystem::path& file, std::string_view text);
 
-}  // namespace gdnav::files
+}  // namespace gdnav::core::files
+namespace gdnav { namespace files = core::files; }  // the short name (docs/architecture.md, "Namespaces")

@@ -13,7 +13,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>
 
-namespace gdnav::filters {
+namespace gdnav::core::filters {
 
 template <int N>
 using Vec = Eigen::Matrix<double, N, 1>;
@@ -130,4 +130,5 @@ double nees(const Vec<N>& error, const SqMat<N>& p) {
     return error.dot(llt.solve(error));
 }
 
-}  // namespace gdnav::filters
+}  // namespace gdnav::core::filters
+namespace gdnav { namespace filters = core::filters; }  // the short name (docs/architecture.md, "Namespaces")

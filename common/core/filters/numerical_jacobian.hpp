@@ -7,7 +7,7 @@
 
 #include <Eigen/Core>
 
-namespace gdnav::filters {
+namespace gdnav::core::filters {
 
 template <int M, int N, typename F>
 Eigen::Matrix<double, M, N> numerical_jacobian(F&& f, const Eigen::Matrix<double, N, 1>& x, double rel_step = 1e-6,
@@ -32,4 +32,5 @@ double relative_error(const Eigen::MatrixBase<DA>& a, const Eigen::MatrixBase<DB
     return (a - b).cwiseAbs().maxCoeff() / scale;
 }
 
-}  // namespace gdnav::filters
+}  // namespace gdnav::core::filters
+namespace gdnav { namespace filters = core::filters; }  // the short name (docs/architecture.md, "Namespaces")

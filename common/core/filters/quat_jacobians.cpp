@@ -2,7 +2,7 @@
 
 #include "math/rotation.hpp"
 
-namespace gdnav::filters {
+namespace gdnav::core::filters {
 
 Eigen::Matrix3d rot_quadratic(const Quat4& q) {
     const double w = q(0), x = q(1), y = q(2), z = q(3);
@@ -71,4 +71,4 @@ Mat34 att_error_jacobian(const Quat4& q_est) {
     return g;
 }
 
-}  // namespace gdnav::filters
+}  // namespace gdnav::core::filters

@@ -15,7 +15,7 @@
 //                           angle about N axes (error applied on the NED side, q_true = dtheta_n (x) q_est).
 #include <Eigen/Core>
 
-namespace gdnav::filters {
+namespace gdnav::core::filters {
 
 using Quat4 = Eigen::Vector4d;  // (w, x, y, z)
 using Mat34 = Eigen::Matrix<double, 3, 4>;
@@ -34,4 +34,5 @@ Quat4 quat_kinematics(const Quat4& q, const Eigen::Vector3d& w);
 
 Mat34 att_error_jacobian(const Quat4& q_est);
 
-}  // namespace gdnav::filters
+}  // namespace gdnav::core::filters
+namespace gdnav { namespace filters = core::filters; }  // the short name (docs/architecture.md, "Namespaces")

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace gdnav::gnc {
+namespace gdnav::core::gnc {
 
 using math::Quat;
 using math::Vec3;
@@ -56,4 +56,4 @@ MagAlignment align_mag(const AlignmentErrors& e, const Vec3& mag_err_nT, const V
     return a;
 }
 
-}  // namespace gdnav::gnc
+}  // namespace gdnav::core::gnc

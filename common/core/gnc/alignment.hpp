@@ -19,7 +19,7 @@
 #include "math/rotation.hpp"
 #include "random/stream.hpp"
 
-namespace gdnav::gnc {
+namespace gdnav::core::gnc {
 
 struct AlignmentErrors {
     double att_sigma_rad{0.1 * 3.14159265358979323846 / 180.0};
@@ -57,7 +57,8 @@ ImuAlignment align_imu(const AlignmentErrors& e, const math::Quat& q_nb_true, co
 MagAlignment align_mag(const AlignmentErrors& e, const math::Vec3& mag_err_nT, const math::Vec3& b_dev_n_nT,
                        rnd::Stream& stream);
 
-}  // namespace gdnav::gnc
+}  // namespace gdnav::core::gnc
+namespace gdnav { namespace gnc = core::gnc; }  // the short name (docs/architecture.md, "Namespaces")
 
 namespace gdnav::sensors {  // their names in the sensor models, where the alignment is emulated
 using gnc::align_imu;

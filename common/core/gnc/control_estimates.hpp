@@ -4,7 +4,7 @@
 // other.
 #include "math/rotation.hpp"
 
-namespace gdnav::gnc {
+namespace gdnav::core::gnc {
 
 struct ControlEstimates {
     double airspeed_mps{0.0};                   // air data filter: true airspeed V
@@ -16,7 +16,8 @@ struct ControlEstimates {
     double altitude_m{0.0};                     // position filter: h
 };
 
-}  // namespace gdnav::gnc
+}  // namespace gdnav::core::gnc
+namespace gdnav { namespace gnc = core::gnc; }  // the short name (docs/architecture.md, "Namespaces")
 
 namespace gdnav::control {
 using ControlEstimates = gnc::ControlEstimates;  // its name in the control model's API

@@ -5,7 +5,7 @@
 
 #include "gnc/modes.hpp"
 
-namespace gdnav::gnc {
+namespace gdnav::core::gnc {
 
 struct GuidanceOutput {
     std::uint32_t operation{0};   // index of the mission operation being flown
@@ -13,7 +13,8 @@ struct GuidanceOutput {
     bool finished{false};         // the mission's last operation is done
 };
 
-}  // namespace gdnav::gnc
+}  // namespace gdnav::core::gnc
+namespace gdnav { namespace gnc = core::gnc; }  // the short name (docs/architecture.md, "Namespaces")
 
 namespace gdnav::guidance {
 using GuidanceOutput = gnc::GuidanceOutput;  // its name in the guidance model's API

@@ -6,7 +6,7 @@
 
 #include "math/rotation.hpp"
 
-namespace gdnav::gnc {
+namespace gdnav::core::gnc {
 
 namespace {
 
@@ -159,4 +159,4 @@ Mission MissionBuilder::build() const {
     return mission_;
 }
 
-}  // namespace gdnav::gnc
+}  // namespace gdnav::core::gnc

@@ -28,7 +28,7 @@
 
 #include "gnc/modes.hpp"
 
-namespace gdnav::gnc {
+namespace gdnav::core::gnc {
 
 enum class TriggerKind : std::uint8_t {
     time,
@@ -132,7 +132,8 @@ private:
     gnc::ChannelTargets current_;
 };
 
-}  // namespace gdnav::gnc
+}  // namespace gdnav::core::gnc
+namespace gdnav { namespace gnc = core::gnc; }  // the short name (docs/architecture.md, "Namespaces")
 
 // Their names in the guidance model's API (the mission lived there before it became a shared GNC type).
 namespace gdnav::guidance {

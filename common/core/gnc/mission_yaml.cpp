@@ -7,7 +7,7 @@
 
 #include "math/rotation.hpp"
 
-namespace gdnav::gnc {
+namespace gdnav::core::gnc {
 
 namespace {
 
@@ -180,4 +180,4 @@ Mission parse_mission(const Config& cfg) {
 
 Mission load_mission(const std::filesystem::path& file) { return parse_mission(Config::load(file)); }
 
-}  // namespace gdnav::gnc
+}  // namespace gdnav::core::gnc

@@ -42,13 +42,14 @@
 #include "config/config.hpp"
 #include "gnc/mission.hpp"
 
-namespace gdnav::gnc {
+namespace gdnav::core::gnc {
 
 Mission load_mission(const std::filesystem::path& file);
 // Reads a mission from a mapping (a whole file or a section of a scenario file) and calls finish() on it.
 Mission parse_mission(const config::Config& cfg);
 
-}  // namespace gdnav::gnc
+}  // namespace gdnav::core::gnc
+namespace gdnav { namespace gnc = core::gnc; }  // the short name (docs/architecture.md, "Namespaces")
 
 namespace gdnav::guidance {  // their names in the guidance model's API, as before
 using gnc::load_mission;

@@ -25,7 +25,7 @@
 #include <string_view>
 #include <type_traits>
 
-namespace gdnav::gnc {
+namespace gdnav::core::gnc {
 
 enum class ThrottleMode : std::uint8_t { airspeed = 1 };
 enum class ElevatorMode : std::uint8_t { pitch = 1, pressure_altitude = 2, altitude = 3, air_path_angle = 4 };
@@ -103,4 +103,5 @@ constexpr std::optional<E> mode_from_octet(std::uint8_t octet) {
 constexpr bool has_outer_loop(ElevatorMode m) { return m != ElevatorMode::pitch; }
 constexpr bool has_outer_loop(AileronMode m) { return m != AileronMode::bank; }
 
-}  // namespace gdnav::gnc
+}  // namespace gdnav::core::gnc
+namespace gdnav { namespace gnc = core::gnc; }  // the short name (docs/architecture.md, "Namespaces")

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace gdnav::gnc {
+namespace gdnav::core::gnc {
 
 NavState make_nav_state(double airspeed_mps, double pressure_altitude_m, double altitude_m, const math::Vec3& v_n_mps,
                         const math::Quat& q_nb) {
@@ -16,4 +16,4 @@ NavState make_nav_state(double airspeed_mps, double pressure_altitude_m, double 
     return s;
 }
 
-}  // namespace gdnav::gnc
+}  // namespace gdnav::core::gnc

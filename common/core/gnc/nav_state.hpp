@@ -3,7 +3,7 @@
 // wrappers of guidance fill it from the estimate topics; it lives here so that no component includes another's model.
 #include "math/rotation.hpp"
 
-namespace gdnav::gnc {
+namespace gdnav::core::gnc {
 
 // The navigation estimates guidance needs (all from the navigation filter output, SI units).
 struct NavState {
@@ -19,7 +19,8 @@ struct NavState {
 NavState make_nav_state(double airspeed_mps, double pressure_altitude_m, double altitude_m, const math::Vec3& v_n_mps,
                         const math::Quat& q_nb);
 
-}  // namespace gdnav::gnc
+}  // namespace gdnav::core::gnc
+namespace gdnav { namespace gnc = core::gnc; }  // the short name (docs/architecture.md, "Namespaces")
 
 namespace gdnav::guidance {  // their names in the guidance model's API, as before
 using gnc::make_nav_state;

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace gdnav::math {
+namespace gdnav::core::math {
 
 double wrap_pi(double a) {
     double r = std::fmod(a + kPi, 2.0 * kPi);
@@ -96,4 +96,4 @@ AirAngles air_angles(const Vec3& v) {
 // R_bw * (V, 0, 0) == vtas_body(V, aoa, aos).
 Mat3 dcm_body_from_wind(double aoa, double aos) { return dcm_from_euler({-aos, aoa, 0.0}).transpose(); }
 
-}  // namespace gdnav::math
+}  // namespace gdnav::core::math

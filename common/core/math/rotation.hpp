@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace gdnav::math {
+namespace gdnav::core::math {
 
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
@@ -63,4 +63,5 @@ AirAngles air_angles(const Vec3& vtas_b);
 // Rotation from wind (air-path) axes to body axes: Euler (yaw = -aos, pitch = aoa, bank = 0).
 Mat3 dcm_body_from_wind(double aoa_rad, double aos_rad);
 
-}  // namespace gdnav::math
+}  // namespace gdnav::core::math
+namespace gdnav { namespace math = core::math; }  // the short name (docs/architecture.md, "Namespaces")

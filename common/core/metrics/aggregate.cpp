@@ -3,7 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-namespace gdnav::metrics {
+namespace gdnav::core::metrics {
 
 Aggregate aggregate(const std::vector<double>& values) {
     RunningStats s;
@@ -74,4 +74,4 @@ std::string to_yaml(const BatchAggregate& b) {
     return o.str();
 }
 
-}  // namespace gdnav::metrics
+}  // namespace gdnav::core::metrics

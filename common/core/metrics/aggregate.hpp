@@ -15,7 +15,7 @@
 
 #include "metrics/run_record.hpp"
 
-namespace gdnav::metrics {
+namespace gdnav::core::metrics {
 
 struct Aggregate {
     double mean{0.0};
@@ -49,4 +49,5 @@ BatchAggregate aggregate_runs(const std::vector<RunRecord>& runs);
 // report/aggregate.yaml: every aggregate with 17 significant digits.
 std::string to_yaml(const BatchAggregate& a);
 
-}  // namespace gdnav::metrics
+}  // namespace gdnav::core::metrics
+namespace gdnav { namespace metrics = core::metrics; }  // the short name (docs/architecture.md, "Namespaces")

@@ -2,7 +2,7 @@
 
 #include <limits>
 
-namespace gdnav::metrics {
+namespace gdnav::core::metrics {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -27,4 +27,4 @@ double LinearTrend::r2() const {
     return n_ >= 2 && s_tt_ > 0.0 && s_yy_ > 0.0 ? s_ty_ * s_ty_ / (s_tt_ * s_yy_) : kNaN;
 }
 
-}  // namespace gdnav::metrics
+}  // namespace gdnav::core::metrics

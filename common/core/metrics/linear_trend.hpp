@@ -6,7 +6,7 @@
 // (slope of the attitude error after a settling time) and the growth of the horizontal error after t_GNSS.
 #include <cstdint>
 
-namespace gdnav::metrics {
+namespace gdnav::core::metrics {
 
 class LinearTrend {
 public:
@@ -22,4 +22,5 @@ private:
     double s_tt_{0.0}, s_yy_{0.0}, s_ty_{0.0};
 };
 
-}  // namespace gdnav::metrics
+}  // namespace gdnav::core::metrics
+namespace gdnav { namespace metrics = core::metrics; }  // the short name (docs/architecture.md, "Namespaces")

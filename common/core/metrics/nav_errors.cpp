@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace gdnav::metrics {
+namespace gdnav::core::metrics {
 
 HorizontalError horizontal_error(double lat_est_rad, double lon_est_rad, const NavState& truth,
                                  const earth::Radii& radii0) {
@@ -36,4 +36,4 @@ NavErrors nav_errors(const NavState& est, const NavState& truth, const earth::Ra
     return e;
 }
 
-}  // namespace gdnav::metrics
+}  // namespace gdnav::core::metrics

@@ -19,7 +19,7 @@
 #include "earth/wgs84.hpp"
 #include "math/rotation.hpp"
 
-namespace gdnav::metrics {
+namespace gdnav::core::metrics {
 
 // The navigation state compared (filled from Truth or from the three estimate topics).
 struct NavState {
@@ -63,4 +63,5 @@ HorizontalError horizontal_error(double lat_est_rad, double lon_est_rad, const N
 // All errors of one step.
 NavErrors nav_errors(const NavState& est, const NavState& truth, const earth::Radii& radii0);
 
-}  // namespace gdnav::metrics
+}  // namespace gdnav::core::metrics
+namespace gdnav { namespace metrics = core::metrics; }  // the short name (docs/architecture.md, "Namespaces")

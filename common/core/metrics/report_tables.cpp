@@ -7,7 +7,7 @@
 
 #include "math/rotation.hpp"
 
-namespace gdnav::metrics {
+namespace gdnav::core::metrics {
 
 namespace {
 
@@ -184,4 +184,4 @@ std::string runs_csv(const std::vector<RunRecord>& runs) {
     return o.str();
 }
 
-}  // namespace gdnav::metrics
+}  // namespace gdnav::core::metrics

@@ -12,7 +12,7 @@
 
 #include "metrics/aggregate.hpp"
 
-namespace gdnav::metrics {
+namespace gdnav::core::metrics {
 
 struct LabelledBatch {
     std::string label;  // e.g. "#1"
@@ -26,4 +26,5 @@ std::string runs_csv(const std::vector<RunRecord>& runs);
 // "%+.*f" or "%.*f".
 std::string fixed(double v, int decimals, bool sign);
 
-}  // namespace gdnav::metrics
+}  // namespace gdnav::core::metrics
+namespace gdnav { namespace metrics = core::metrics; }  // the short name (docs/architecture.md, "Namespaces")

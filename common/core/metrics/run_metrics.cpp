@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-namespace gdnav::metrics {
+namespace gdnav::core::metrics {
 
 double signal_value(const NavErrors& e, Signal s) {
     switch (s) {
@@ -67,4 +67,4 @@ double RunMetrics::final_percent(Signal s) const {
     return 100.0 * stats(s).last() / d;
 }
 
-}  // namespace gdnav::metrics
+}  // namespace gdnav::core::metrics

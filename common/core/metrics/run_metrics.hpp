@@ -20,7 +20,7 @@
 #include "metrics/linear_trend.hpp"
 #include "metrics/running_stats.hpp"
 
-namespace gdnav::metrics {
+namespace gdnav::core::metrics {
 
 enum class Signal : std::uint8_t {
     yaw,
@@ -121,4 +121,5 @@ private:
     double t_last_noted_s_{kNoTime};
 };
 
-}  // namespace gdnav::metrics
+}  // namespace gdnav::core::metrics
+namespace gdnav { namespace metrics = core::metrics; }  // the short name (docs/architecture.md, "Namespaces")

@@ -9,7 +9,7 @@
 #include "config/config.hpp"
 #include "files/write_error.hpp"
 
-namespace gdnav::metrics {
+namespace gdnav::core::metrics {
 
 namespace fs = std::filesystem;
 
@@ -163,4 +163,4 @@ bool run_record_complete(const fs::path& file) {
     }
 }
 
-}  // namespace gdnav::metrics
+}  // namespace gdnav::core::metrics

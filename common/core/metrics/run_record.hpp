@@ -29,7 +29,7 @@
 
 #include "metrics/run_metrics.hpp"
 
-namespace gdnav::metrics {
+namespace gdnav::core::metrics {
 
 struct SignalSummary {
     double mean{0.0};
@@ -85,4 +85,5 @@ bool run_record_complete(const std::filesystem::path& file);
 // "%.17g", with .nan / .inf / -.inf for the non-finite values (YAML spelling).
 std::string format_double17(double v);
 
-}  // namespace gdnav::metrics
+}  // namespace gdnav::core::metrics
+namespace gdnav { namespace metrics = core::metrics; }  // the short name (docs/architecture.md, "Namespaces")

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-namespace gdnav::metrics {
+namespace gdnav::core::metrics {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -23,4 +23,4 @@ double RunningStats::std() const { return n_ ? std::sqrt(std::fmax(m2_, 0.0) / s
 double RunningStats::smax() const { return n_ ? smax_ : kNaN; }
 double RunningStats::last() const { return n_ ? last_ : kNaN; }
 
-}  // namespace gdnav::metrics
+}  // namespace gdnav::core::metrics

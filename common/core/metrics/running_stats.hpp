@@ -9,7 +9,7 @@
 // which stays accurate when |mean| >> std. No allocation; the results are a pure function of the sample sequence.
 #include <cstdint>
 
-namespace gdnav::metrics {
+namespace gdnav::core::metrics {
 
 class RunningStats {
 public:
@@ -30,4 +30,5 @@ private:
     double last_{0.0};
 };
 
-}  // namespace gdnav::metrics
+}  // namespace gdnav::core::metrics
+namespace gdnav { namespace metrics = core::metrics; }  // the short name (docs/architecture.md, "Namespaces")

@@ -6,7 +6,7 @@
 // The redraw loops terminate with probability one only if s_t > 0 and dt_mean >= 0 (valid()).
 #include "random/stream.hpp"
 
-namespace gdnav::rnd {
+namespace gdnav::core::rnd {
 
 struct RampTimesSpec {
     double t_ini_mean_s{400.0};
@@ -33,4 +33,5 @@ struct RampTimesSpec {
     }
 };
 
-}  // namespace gdnav::rnd
+}  // namespace gdnav::core::rnd
+namespace gdnav { namespace rnd = core::rnd; }  // the short name (docs/architecture.md, "Namespaces")

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace gdnav::rnd {
+namespace gdnav::core::rnd {
 
 std::uint64_t fnv1a64(std::string_view text) {
     std::uint64_t h = 0xcbf29ce484222325ULL;
@@ -91,4 +91,4 @@ Eigen::Vector3d Stream::normal3() {
     return {a, b, c};
 }
 
-}  // namespace gdnav::rnd
+}  // namespace gdnav::core::rnd

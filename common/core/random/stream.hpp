@@ -13,7 +13,7 @@
 
 #include <Eigen/Core>
 
-namespace gdnav::rnd {
+namespace gdnav::core::rnd {
 
 std::uint64_t fnv1a64(std::string_view text);
 std::uint64_t splitmix64(std::uint64_t& state);
@@ -44,4 +44,5 @@ private:
     double spare_{0.0};
 };
 
-}  // namespace gdnav::rnd
+}  // namespace gdnav::core::rnd
+namespace gdnav { namespace rnd = core::rnd; }  // the short name (docs/architecture.md, "Namespaces")

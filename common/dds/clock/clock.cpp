@@ -11,18 +11,18 @@
 #include "framework/graph.hpp"
 #include "dds/process/process_signals.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 using namespace eprosima::fastdds::dds;
 using eprosima::fastrtps::Duration_t;
 
 void Clock::Impl::heartbeat(double now) {
     if (now < next_hb_s) return;
-    next_hb_s = now + kHeartbeatPeriodS;
+    next_hb_s = now + framework::kHeartbeatPeriodS;
     status_out.run_id(rc.info.run_index);
     status_out.step(current);
     status_out.t_s(rc.info.time_of(current));
-    status_out.member(kClockName);
+    status_out.member(framework::kClockName);
     status_out.host(host_id);
     status_out.kind(msg::STATUS_HEARTBEAT);
     status_out.message(rc.out_dir.substr(0, 1024));  // names the run to a clock that meets it (docs/protocol.md)
@@ -31,7 +31,8 @@ void Clock::Impl::heartbeat(double now) {
     status_out.run_token(token);
     status_writer->write(&status_out);
     // While waiting inside a step, re-send the current Tick: members see the clock alive and the dead set.
-    if (phase == Phase::Running && now - last_tick_sent_s > kHeartbeatPeriodS && !tick_pending) send_tick(now);
+    if (phase == Phase::Running && now - last_tick_sent_s > framework::kHeartbeatPeriodS && !tick_pending)
+        send_tick(now);
 }
 
 void Clock::Impl::send_tick(double now) {
@@ -129,24 +130,24 @@ bool Clock::Impl::everyone_ready() {
 }
 
 int Clock::Impl::loop() {
-    start_s = steady_now_s();
+    start_s = framework::steady_now_s();
     double last_wake_s = start_s;
     ConditionSeq active;
     while (true) {
-        double now = steady_now_s();
-        double wait = kWaitSliceS;
+        double now = framework::steady_now_s();
+        double wait = framework::kWaitSliceS;
         if (tick_pending && rc.realtime > 0.0) {
             const double target = run_start_s + static_cast<double>(current) * rc.info.dt_s / rc.realtime;
-            wait = std::clamp(target - now, 0.0, kWaitSliceS);
+            wait = std::clamp(target - now, 0.0, framework::kWaitSliceS);
             if (wait <= 0.0) {
                 tick_pending = false;
                 send_tick(now);
-                wait = kWaitSliceS;
+                wait = framework::kWaitSliceS;
             }
         }
         waitset.wait(active, Duration_t(0, static_cast<std::uint32_t>(wait * 1e9)));
-        now = steady_now_s();
-        const double stall = own_stall_s(now - last_wake_s);
+        now = framework::steady_now_s();
+        const double stall = framework::own_stall_s(now - last_wake_s);
         last_wake_s = now;
         if (stall > 0.0) {  // the members' silence meanwhile is not counted
             for (Member* m : table) m->last_seen_s += stall;
@@ -154,7 +155,7 @@ int Clock::Impl::loop() {
         }
         if (stop_requested()) {
             abort_reason = "clock interrupted by signal " + std::to_string(stop_signal());
-            return finish(kExitInterrupted, now);
+            return finish(framework::kExitInterrupted, now);
         }
         read_status(now);
         const int code = phase == Phase::Claim        ? claim_phase(now)
@@ -175,15 +176,15 @@ int Clock::Impl::claim_phase(double now) {
                       "another --domain, or give none to get a free one",
                       rc.domain_id, rival, token_text(token));
         if (opt.ready_fd >= 0) close(opt.ready_fd);
-        return kExitStartup;
+        return framework::kExitStartup;
     }
     if (const std::uint64_t g = dds->participants().generation(); g != participants_seen) {
         participants_seen = g;
         other_life_s = now;
     }
     const double listened = now - start_s;
-    if (listened < kClaimListenS) return kGoOn;
-    if (listened < kClaimLongestS && now - other_life_s < kClaimQuietS) return kGoOn;
+    if (listened < framework::kClaimListenS) return kGoOn;
+    if (listened < framework::kClaimLongestS && now - other_life_s < framework::kClaimQuietS) return kGoOn;
     phase = Phase::Gather;
     if (foreign.count() > 0)
         spdlog::info("DDS domain {}: {} statuses of another run's members heard in {:.1f} s, but not its clock (a run "
@@ -200,7 +201,7 @@ int Clock::Impl::claim_phase(double now) {
 
 int Clock::Impl::gather_phase(double now) {
     gather(now);
-    if (phase == Phase::Gather && check_gather_timeouts(now)) return finish(kExitStartup, now);
+    if (phase == Phase::Gather && check_gather_timeouts(now)) return finish(framework::kExitStartup, now);
     return kGoOn;
 }
 
@@ -218,7 +219,7 @@ int Clock::Impl::configured_phase(double now) {
             if (!m->ready && !m->free) missing += (missing.empty() ? "" : ", ") + m->name;
         abort_reason = "start-up timeout: members not ready (DDS matching) after " +
                        fmt::format("{:.0f}", rc.startup_timeout_s) + " s: " + missing;
-        return finish(kExitStartup, now);
+        return finish(framework::kExitStartup, now);
     }
     check_liveness(now);
     return kGoOn;
@@ -228,7 +229,7 @@ int Clock::Impl::running_phase(double now) {
     read_done(now);
     read_fault_requests(now);
     check_liveness(now);
-    if (aborted) return finish(kExitAborted, now);
+    if (aborted) return finish(framework::kExitAborted, now);
     if (adopting) {
         if (!all_adopted()) {
             if (now - adopt_start_s <= rc.stall_timeout_s) return kGoOn;
@@ -239,7 +240,7 @@ int Clock::Impl::running_phase(double now) {
             aborted = true;
             abort_reason = "fault schedule version " + std::to_string(faults_version) + " not adopted within " +
                            fmt::format("{:.0f}", rc.stall_timeout_s) + " s by: " + late;
-            return finish(kExitAborted, now);
+            return finish(framework::kExitAborted, now);
         }
         adopting = false;
         spdlog::info("fault schedule version {} adopted by every member", faults_version);
@@ -249,7 +250,7 @@ int Clock::Impl::running_phase(double now) {
         aborted = true;
         abort_reason = "stalled at step " + std::to_string(current) + " for " +
                        fmt::format("{:.0f}", rc.stall_timeout_s) + " s waiting for: " + waiting_for();
-        return finish(kExitAborted, now);
+        return finish(framework::kExitAborted, now);
     }
     return kGoOn;
 }
@@ -259,9 +260,9 @@ int Clock::Impl::advance_tick(double now) {
     current = min_done();
     if (current >= rc.info.steps) {
         current = rc.info.steps;
-        return finish(kExitOk, now);
+        return finish(framework::kExitOk, now);
     }
-    if (!schedule.empty() && essential_killed()) return finish(kExitAborted, now);
+    if (!schedule.empty() && essential_killed()) return finish(framework::kExitAborted, now);
     if (rc.realtime > 0.0) {
         tick_pending = true;
     } else {
@@ -271,8 +272,8 @@ int Clock::Impl::advance_tick(double now) {
     return kGoOn;
 }
 
-Clock::Clock(const RunConfig& rc, ClockOptions opt) : impl_(std::make_unique<Impl>(rc, std::move(opt))) {}
+Clock::Clock(const framework::RunConfig& rc, ClockOptions opt) : impl_(std::make_unique<Impl>(rc, std::move(opt))) {}
 Clock::~Clock() = default;
 int Clock::run() { return impl_->loop(); }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

@@ -6,9 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "dds/compat.hpp"
 #include "framework/run_config.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 struct ClockOptions {
     std::vector<std::string> members;  // barrier members expected before step 0 (default: all components)
@@ -20,7 +21,7 @@ struct ClockOptions {
 
 class Clock {
 public:
-    Clock(const RunConfig& rc, ClockOptions opt);
+    Clock(const framework::RunConfig& rc, ClockOptions opt);
     ~Clock();
     int run();  // exit code (lockstep.hpp)
 
@@ -29,4 +30,4 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

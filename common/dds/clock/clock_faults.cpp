@@ -11,7 +11,7 @@
 #include "files/write_error.hpp"
 #include "framework/graph.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 using namespace eprosima::fastdds::dds;
 
@@ -36,13 +36,13 @@ void Clock::Impl::read_fault_requests(double now) {
         if (error.empty() && at >= rc.info.steps) error = "the run ends before step " + std::to_string(at);
         if (error.empty()) {
             try {
-                std::map<std::string, faults::MemberPorts> ports;
+                std::map<std::string, framework::faults::MemberPorts> ports;
                 for (const Member* m : table) {
                     auto& p = ports[m->name];
-                    p.outputs = split_topics(m->outputs);
+                    p.outputs = framework::split_topics(m->outputs);
                     p.external = rc.is_external(m->name) || m->free;
                 }
-                const faults::Fault& f = schedule.add_live(text, at, rc.info, ports);
+                const framework::faults::Fault& f = schedule.add_live(text, at, rc.info, ports);
                 ++faults_version;
                 adopting = true;
                 adopt_start_s = now;
@@ -79,4 +79,4 @@ void Clock::Impl::write_faults() const {
     }
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

@@ -16,6 +16,7 @@
 #include <fastdds/dds/core/condition/WaitSet.hpp>
 #include <spdlog/spdlog.h>
 
+#include "dds/compat.hpp"
 #include "dds/dds_context.hpp"
 #include "dds/foreign_runs.hpp"
 #include "dds/socket_buffers.hpp"
@@ -23,7 +24,7 @@
 #include "msgs/messages.hpp"
 #include "dds/security/security.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 using namespace eprosima::fastdds::dds;
 
@@ -51,7 +52,7 @@ struct Clock::Impl {
         [[nodiscard]] bool observer() const { return free && outputs.empty(); }
     };
 
-    const RunConfig& rc;
+    const framework::RunConfig& rc;
     ClockOptions opt;
     std::unique_ptr<DdsContext> dds;
     DataWriter* tick_writer{nullptr};
@@ -74,7 +75,7 @@ struct Clock::Impl {
     double next_wait_log_s{0.0};
     std::set<std::string> refused;  // members refused for a protocol version mismatch (logged once)
     bool tick_pending{false};
-    std::string host_id{host_identity()};
+    std::string host_id{framework::host_identity()};
     const std::uint64_t token{draw_run_token()};  // the run's token (on the wire only)
     ForeignRuns foreign;                          // control messages of other runs (other tokens), ignored
     std::string rival;                            // another clock heard while claiming the domain
@@ -82,7 +83,7 @@ struct Clock::Impl {
     std::uint64_t participants_seen{0};           // while claiming: discovery generation last looked at
     // The fault schedule: the run config's, grown by faults injected live (gdnav fault). Members acknowledge each
     // version (ComponentStatus.faults_version) before the clock lets the run reach the step a new fault acts at.
-    faults::FaultSchedule schedule{rc.faults};
+    framework::faults::FaultSchedule schedule{rc.faults};
     std::uint32_t faults_version{0};
     bool adopting{false};
     std::vector<std::string> rejoined;  // members that came back after being declared dead
@@ -94,7 +95,7 @@ struct Clock::Impl {
     msg::RunControl control;
     msg::FaultRequest fault_in;
 
-    Impl(const RunConfig& r, ClockOptions o) : rc(r), opt(std::move(o)) {
+    Impl(const framework::RunConfig& r, ClockOptions o) : rc(r), opt(std::move(o)) {
         if (opt.members.empty()) opt.members = rc.member_names();
         for (const auto& n : opt.members) {
             Member m;
@@ -109,12 +110,12 @@ struct Clock::Impl {
                                                            kernel_receive_buffer_cap());
             !s.empty())
             spdlog::warn("{}", s);
-        tick_writer = dds->writer(topics::kTick, message_ops<msg::Tick>(), kControlWriterProfile);
-        control_writer = dds->writer(topics::kRunControl, message_ops<msg::RunControl>(), kLatchedWriterProfile);
-        status_writer = dds->writer(topics::kStatus, message_ops<msg::ComponentStatus>(), kControlWriterProfile);
-        done_reader = dds->reader(topics::kStepDone, message_ops<msg::StepDone>(), kControlReaderProfile);
-        status_reader = dds->reader(topics::kStatus, message_ops<msg::ComponentStatus>(), kControlReaderProfile);
-        fault_reader = dds->reader(topics::kFaultRequest, message_ops<msg::FaultRequest>(), kControlReaderProfile);
+        tick_writer = dds->writer(topics::kTick, msg::message_ops<msg::Tick>(), kControlWriterProfile);
+        control_writer = dds->writer(topics::kRunControl, msg::message_ops<msg::RunControl>(), kLatchedWriterProfile);
+        status_writer = dds->writer(topics::kStatus, msg::message_ops<msg::ComponentStatus>(), kControlWriterProfile);
+        done_reader = dds->reader(topics::kStepDone, msg::message_ops<msg::StepDone>(), kControlReaderProfile);
+        status_reader = dds->reader(topics::kStatus, msg::message_ops<msg::ComponentStatus>(), kControlReaderProfile);
+        fault_reader = dds->reader(topics::kFaultRequest, msg::message_ops<msg::FaultRequest>(), kControlReaderProfile);
         for (DataReader* r : {done_reader, status_reader, fault_reader}) {
             r->get_statuscondition().set_enabled_statuses(StatusMask::data_available());
             waitset.attach_condition(r->get_statuscondition());
@@ -213,4 +214,4 @@ struct Clock::Impl {
     int advance_tick(double now);
 };
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

@@ -8,7 +8,7 @@
 
 #include "framework/graph.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 using namespace eprosima::fastdds::dds;
 
@@ -17,7 +17,7 @@ void Clock::Impl::read_status(double now) {
     while (status_reader->take_next_sample(&status_in, &info) == ReturnCode_t::RETCODE_OK) {
         if (!info.valid_data) continue;
         const std::string name = status_in.member().to_string();
-        if (name == kClockName) {
+        if (name == framework::kClockName) {
             clock_status(status_in);
             continue;
         }
@@ -185,9 +185,9 @@ std::string Clock::Impl::waiting_for() const {
 void Clock::Impl::accept_rejoin(Member& m, const std::string& host, double now) {
     const std::uint64_t at = current + rc.window_steps + 2;
     if (at >= rc.info.steps) return;
-    std::map<std::string, faults::MemberPorts> ports;
-    for (const Member* x : table) ports[x->name].outputs = split_topics(x->outputs);
-    const faults::Fault& f = schedule.add_live("{target: " + m.name + ", kind: rejoin}", at, rc.info, ports);
+    std::map<std::string, framework::faults::MemberPorts> ports;
+    for (const Member* x : table) ports[x->name].outputs = framework::split_topics(x->outputs);
+    const framework::faults::Fault& f = schedule.add_live("{target: " + m.name + ", kind: rejoin}", at, rc.info, ports);
     m.dead = false;
     m.dead_reason.clear();
     m.host = host;
@@ -216,7 +216,7 @@ void Clock::Impl::send_clock_status(msg::StatusKind kind, const std::string& mes
     status_out.run_id(rc.info.run_index);
     status_out.step(current);
     status_out.t_s(rc.info.time_of(current));
-    status_out.member(kClockName);
+    status_out.member(framework::kClockName);
     status_out.host(host_id);
     status_out.kind(kind);
     status_out.message(message.substr(0, 1024));
@@ -230,7 +230,7 @@ void Clock::Impl::send_clock_status(msg::StatusKind kind, const std::string& mes
 // Members may be done beyond the kill step (the barrier skips a killed member): the run ends at the kill step.
 bool Clock::Impl::essential_killed() {
     for (const auto& f : schedule.faults())
-        if (f.kind == faults::Kind::Kill && f.from_step <= current &&
+        if (f.kind == framework::faults::Kind::Kill && f.from_step <= current &&
             std::find(rc.essential.begin(), rc.essential.end(), f.target) != rc.essential.end()) {
             current = f.from_step;
             aborted = true;
@@ -241,4 +241,4 @@ bool Clock::Impl::essential_killed() {
     return false;
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

@@ -11,7 +11,7 @@
 #include "dds/process/run_cause.hpp"
 #include "files/write_error.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 using namespace eprosima::fastdds::dds;
 using eprosima::fastrtps::Duration_t;
@@ -105,7 +105,7 @@ std::uint64_t Clock::Impl::write_rejected(std::ostream& f) const {
 }
 
 int Clock::Impl::finish(int code, double now) {
-    if (code == kExitOk) {
+    if (code == framework::kExitOk) {
         send_control(msg::RUN_STOP, "");
         log_progress(now, true);
         spdlog::info("run complete: {} steps in {:.2f} s", rc.info.steps, now - run_start_s);
@@ -114,9 +114,10 @@ int Clock::Impl::finish(int code, double now) {
         spdlog::error("run aborted: {}", abort_reason);
     }
     foreign.report();
-    if (!write_summary(code == kExitOk, now) && code == kExitOk) code = kExitWriteFailed;
+    if (!write_summary(code == framework::kExitOk, now) && code == framework::kExitOk)
+        code = framework::kExitWriteFailed;
     control_writer->wait_for_acknowledgments(Duration_t(2, 0));
     return code;
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

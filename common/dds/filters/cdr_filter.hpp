@@ -10,7 +10,9 @@
 #include <fastdds/dds/topic/IContentFilterFactory.hpp>
 #include <spdlog/spdlog.h>
 
-namespace gdnav::runtime::cdr_filter {
+#include "dds/compat.hpp"
+
+namespace gdnav::dds::cdr_filter {
 
 inline constexpr std::uint32_t kEncapsulation = 4;  // CDR encapsulation header; its second byte tells the byte order
 
@@ -63,4 +65,4 @@ void register_factory(eprosima::fastdds::dds::DomainParticipant& participant, co
         spdlog::warn("cannot register the content filter {}: {}", filter_class, consequence);
 }
 
-}  // namespace gdnav::runtime::cdr_filter
+}  // namespace gdnav::dds::cdr_filter

@@ -4,7 +4,7 @@
 
 #include "dds/filters/cdr_filter.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 using namespace eprosima::fastdds::dds;
 
@@ -42,4 +42,4 @@ void register_status_filter(DomainParticipant& participant) {
                                  "hosts receive every member's status");
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

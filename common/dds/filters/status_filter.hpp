@@ -11,7 +11,9 @@
 
 #include <fastdds/dds/domain/DomainParticipant.hpp>
 
-namespace gdnav::runtime {
+#include "dds/compat.hpp"
+
+namespace gdnav::dds {
 
 inline constexpr const char* kStatusFilterClass = "GDNAV_STATUS_OF_MEMBER";
 
@@ -21,4 +23,4 @@ void register_status_filter(eprosima::fastdds::dds::DomainParticipant& participa
 // The member name of a serialised ComponentStatus (CDR with its encapsulation header); false when malformed.
 bool status_member_of_cdr(const unsigned char* data, std::uint32_t length, std::string_view& member);
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

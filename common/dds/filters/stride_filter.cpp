@@ -4,7 +4,7 @@
 
 #include "dds/filters/cdr_filter.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 using namespace eprosima::fastdds::dds;
 
@@ -37,4 +37,4 @@ void register_stride_filter(DomainParticipant& participant) {
                                  "readers with a stride receive every sample");
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

@@ -16,7 +16,9 @@
 
 #include <fastdds/dds/domain/DomainParticipant.hpp>
 
-namespace gdnav::runtime {
+#include "dds/compat.hpp"
+
+namespace gdnav::dds {
 
 inline constexpr const char* kStrideFilterClass = "GDNAV_STEP_STRIDE";
 
@@ -26,4 +28,4 @@ void register_stride_filter(eprosima::fastdds::dds::DomainParticipant& participa
 // The step of a serialised data sample (CDR with its encapsulation header); false when too short to hold a stamp.
 bool stamp_step_of_cdr(const unsigned char* data, std::uint32_t length, std::uint64_t& step);
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

@@ -8,16 +8,17 @@
 #include <string>
 #include <vector>
 
+#include "dds/compat.hpp"
 #include "framework/component.hpp"
 #include "framework/run_config.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 struct HostOptions {
     bool free_running{false};  // members of this host are not in the barrier; inputs use the latest samples
     // Creates a member anew when a scheduled fault restarts it (RunConfig::build_one); without it, a restart
     // of a member of this host ends the host with an error.
-    std::function<std::unique_ptr<Component>(const std::string& name)> rebuild;
+    std::function<std::unique_ptr<framework::Component>(const std::string& name)> rebuild;
     // Come back into a running run after this member was declared dead (gdnav component --rejoin): announce with
     // "rejoin", and start at the step the clock assigns (docs/faults.md, "Rejoin").
     bool rejoin{false};
@@ -25,7 +26,8 @@ struct HostOptions {
 
 class DdsHost {
 public:
-    DdsHost(const RunConfig& rc, std::vector<std::unique_ptr<Component>> members, HostOptions opt = {});
+    DdsHost(const framework::RunConfig& rc, std::vector<std::unique_ptr<framework::Component>> members,
+            HostOptions opt = {});
     ~DdsHost();
     DdsHost(const DdsHost&) = delete;
     DdsHost& operator=(const DdsHost&) = delete;
@@ -39,4 +41,4 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

@@ -4,10 +4,10 @@
 
 #include <spdlog/spdlog.h>
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 bool DdsHost::Impl::configure(const msg::RunControl& c) {
-    const RunInfo& ri = control.run().timing().ri;
+    const framework::RunInfo& ri = control.run().timing().ri;
     if (!faults.adopt(c.faults().to_string(), ri, locals)) return false;
     for (auto& l : locals) {
         l.index = control.members().index_of(l.comp->name());
@@ -24,13 +24,13 @@ bool DdsHost::Impl::configure(const msg::RunControl& c) {
 }
 
 bool DdsHost::Impl::live_faults(const msg::RunControl& c) {
-    const RunInfo& ri = control.run().timing().ri;
+    const framework::RunInfo& ri = control.run().timing().ri;
     const auto first = faults.adopt_live(c.faults().to_string(), ri);
     if (!first) return false;
     inputs.extend_faults(faults.schedule(), *first, control.members().entries(), ri);
     for (std::size_t i = *first; i < faults.schedule().size(); ++i) {
-        const faults::Fault& f = faults.schedule().faults()[i];
-        if (f.kind == faults::Kind::Rejoin) {
+        const framework::faults::Fault& f = faults.schedule().faults()[i];
+        if (f.kind == framework::faults::Kind::Rejoin) {
             rejoin(f);
             continue;
         }
@@ -39,7 +39,7 @@ bool DdsHost::Impl::live_faults(const msg::RunControl& c) {
     return true;
 }
 
-void DdsHost::Impl::rejoin(const faults::Fault& f) {
+void DdsHost::Impl::rejoin(const framework::faults::Fault& f) {
     for (auto& l : locals)
         if (l.awaiting_rejoin && l.comp->name() == f.target) {
             l.awaiting_rejoin = false;
@@ -66,4 +66,4 @@ bool DdsHost::Impl::all_matched() const {
     return control.clock_matched();
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

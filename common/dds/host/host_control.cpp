@@ -5,20 +5,20 @@
 
 #include "framework/graph.hpp"
 
-namespace gdnav::runtime::host {
+namespace gdnav::dds::host {
 
 using namespace eprosima::fastdds::dds;
 
-ControlPlane::ControlPlane(const RunConfig& rc, bool rejoin) : rejoin_(rejoin), run_(rc) {}
+ControlPlane::ControlPlane(const framework::RunConfig& rc, bool rejoin) : rejoin_(rejoin), run_(rc) {}
 
 void ControlPlane::open(DdsContext& dds) {
-    tick_reader_ = dds.reader(topics::kTick, message_ops<msg::Tick>(), kControlReaderProfile);
-    control_reader_ = dds.reader(topics::kRunControl, message_ops<msg::RunControl>(), kLatchedReaderProfile);
+    tick_reader_ = dds.reader(topics::kTick, msg::message_ops<msg::Tick>(), kControlReaderProfile);
+    control_reader_ = dds.reader(topics::kRunControl, msg::message_ops<msg::RunControl>(), kLatchedReaderProfile);
     // Only the clock's statuses (its heartbeat): the other members' are for the clock (dds/filters/status_filter.hpp).
-    status_reader_ = dds.status_reader(topics::kStatus, message_ops<msg::ComponentStatus>(), kControlReaderProfile,
-                                       kClockName);
-    done_writer_ = dds.writer(topics::kStepDone, message_ops<msg::StepDone>(), kControlWriterProfile);
-    status_writer_ = dds.writer(topics::kStatus, message_ops<msg::ComponentStatus>(), kControlWriterProfile);
+    status_reader_ = dds.status_reader(topics::kStatus, msg::message_ops<msg::ComponentStatus>(), kControlReaderProfile,
+                                       framework::kClockName);
+    done_writer_ = dds.writer(topics::kStepDone, msg::message_ops<msg::StepDone>(), kControlWriterProfile);
+    status_writer_ = dds.writer(topics::kStatus, msg::message_ops<msg::ComponentStatus>(), kControlWriterProfile);
     pulse_.attach(status_writer_);
     for (DataReader* r : {control_reader_, status_reader_}) {
         StatusCondition& cond = r->get_statuscondition();
@@ -33,15 +33,15 @@ void ControlPlane::wait(ConditionSeq& active, const eprosima::fastrtps::Duration
 
 void ControlPlane::fill_status(const Local& l, msg::StatusKind kind, const std::string& message,
                                msg::ComponentStatus& out) const {
-    const RunInfo& ri = run_.timing().ri;
+    const framework::RunInfo& ri = run_.timing().ri;
     out.run_id(ri.run_index);
     out.step(l.next_step == 0 ? 0 : l.next_step - 1);
     out.t_s(ri.time_of(out.step()));
     out.member(l.comp->name());
     out.host(host_id_);
     out.kind(kind);
-    out.inputs(join_topics(input_topics(*l.comp)));
-    out.outputs(join_topics(output_topics(*l.comp)));
+    out.inputs(framework::join_topics(framework::input_topics(*l.comp)));
+    out.outputs(framework::join_topics(framework::output_topics(*l.comp)));
     out.free_running(!l.barrier);  // an observer: no outputs and not in the barrier (docs/protocol.md)
     out.message(message);
     out.protocol_version(msg::LOCKSTEP_PROTOCOL_VERSION);
@@ -87,7 +87,7 @@ bool ControlPlane::read_control(int& code, ControlHandler& handler) {
                 if (run_.phase() != RunPhase::Phase::Announce && control_.command() == msg::RUN_FAULTS &&
                     control_.faults_version() > faults_version_) {
                     if (!handler.live_faults(control_)) {
-                        code = kExitStartup;
+                        code = framework::kExitStartup;
                         return false;
                     }
                     faults_version_ = control_.faults_version();
@@ -100,14 +100,14 @@ bool ControlPlane::read_control(int& code, ControlHandler& handler) {
                 break;
             case msg::RUN_STOP:
                 spdlog::debug("host {}: STOP received", host_id_);
-                code = kExitOk;
+                code = framework::kExitOk;
                 return false;
             case msg::RUN_ABORT:
                 // The clock logs the reason and the launcher's last line repeats it: each member's copy only at
                 // debug level (an external member's owner gets it from DdsHost::abort_reason()).
                 abort_reason_ = control_.reason().to_string();
                 spdlog::debug("run aborted by the clock: {}", abort_reason_);
-                code = kExitAborted;
+                code = framework::kExitAborted;
                 return false;
             default:
                 break;
@@ -129,18 +129,18 @@ bool ControlPlane::configure(int& code, ControlHandler& handler) {
         spdlog::error("the clock speaks lockstep protocol version {}, this member speaks {}; "
                       "cannot join (docs/protocol.md, 'Versioning')",
                       control_.protocol_version(), msg::LOCKSTEP_PROTOCOL_VERSION);
-        code = kExitStartup;
+        code = framework::kExitStartup;
         return false;
     }
     run_.adopt_timing(control_);
     token_ = control_.run_token();
     members_.adopt(control_.members());
     if (!handler.configure(control_)) {
-        code = kExitStartup;
+        code = framework::kExitStartup;
         return false;
     }
     faults_version_ = control_.faults_version();
-    run_.joined(steady_now_s());
+    run_.joined(framework::steady_now_s());
     return true;
 }
 
@@ -162,7 +162,7 @@ bool ControlPlane::read_ticks(double now) {
 void ControlPlane::read_status(double now) {
     SampleInfo info;
     while (status_reader_->take_next_sample(&status_in_, &info) == ReturnCode_t::RETCODE_OK) {
-        if (!info.valid_data || status_in_.member().to_string() != kClockName ||
+        if (!info.valid_data || status_in_.member().to_string() != framework::kClockName ||
             status_in_.run_id() != run_.timing().ri.run_index || token_ == 0)
             continue;
         if (status_in_.run_token() == token_)
@@ -185,4 +185,4 @@ bool ControlPlane::clock_matched() const {
     return ts.current_count >= 1 && ds.current_count >= 1;
 }
 
-}  // namespace gdnav::runtime::host
+}  // namespace gdnav::dds::host

@@ -9,6 +9,7 @@
 
 #include <fastdds/dds/core/condition/WaitSet.hpp>
 
+#include "dds/compat.hpp"
 #include "dds/dds_context.hpp"
 #include "dds/foreign_runs.hpp"
 #include "dds/host/host_inbox.hpp"
@@ -19,7 +20,7 @@
 #include "framework/run_config.hpp"
 #include "msgs/messages.hpp"
 
-namespace gdnav::runtime::host {
+namespace gdnav::dds::host {
 
 // What the host does when RunControl brings a member table or a longer fault schedule. Each returns false when
 // the host cannot go on (a start-up error).
@@ -35,7 +36,7 @@ public:
 class ControlPlane {
 public:
     // The pulse thread starts here (host_pulse.hpp).
-    ControlPlane(const RunConfig& rc, bool rejoin);
+    ControlPlane(const framework::RunConfig& rc, bool rejoin);
     ControlPlane(const ControlPlane&) = delete;
     ControlPlane& operator=(const ControlPlane&) = delete;
 
@@ -100,7 +101,7 @@ private:
     eprosima::fastdds::dds::DataWriter* status_writer_{nullptr};
     eprosima::fastdds::dds::WaitSet waitset_;
 
-    std::string host_id_{host_identity()};
+    std::string host_id_{framework::host_identity()};
     std::string abort_reason_;
     ForeignRuns foreign_;
 
@@ -113,4 +114,4 @@ private:
     Pulse pulse_;  // last: its thread starts once the members above are made, and stops first
 };
 
-}  // namespace gdnav::runtime::host
+}  // namespace gdnav::dds::host

@@ -4,14 +4,14 @@
 
 #include <spdlog/spdlog.h>
 
-namespace gdnav::runtime::host {
+namespace gdnav::dds::host {
 
 namespace {
 
 // The schedule in `yaml`; none (logged) when it cannot be read.
-std::optional<faults::FaultSchedule> read_schedule(const std::string& yaml, const RunInfo& ri) {
+std::optional<framework::faults::FaultSchedule> read_schedule(const std::string& yaml, const framework::RunInfo& ri) {
     try {
-        return faults::FaultSchedule::from_yaml(yaml, ri);
+        return framework::faults::FaultSchedule::from_yaml(yaml, ri);
     } catch (const std::exception& e) {
         spdlog::error("cannot apply the clock's fault schedule: {}", e.what());
         return std::nullopt;
@@ -20,13 +20,14 @@ std::optional<faults::FaultSchedule> read_schedule(const std::string& yaml, cons
 
 }  // namespace
 
-bool Faults::adopt(const std::string& yaml, const RunInfo& ri, const std::vector<Local>& locals) {
+bool Faults::adopt(const std::string& yaml, const framework::RunInfo& ri, const std::vector<Local>& locals) {
     auto read = read_schedule(yaml, ri);
     if (!read) return false;
     schedule_ = std::move(*read);
     for (const auto& f : schedule_.faults())
         for (const auto& l : locals)
-            if (f.kind == faults::Kind::Kill && f.target == l.comp->name() && f.until_step < ri.steps && !rebuild_) {
+            if (f.kind == framework::faults::Kind::Kill && f.target == l.comp->name() && f.until_step < ri.steps &&
+                !rebuild_) {
                 spdlog::error("member '{}' cannot be restarted by the scheduled {} (this host cannot create it "
                               "anew)", l.comp->name(), f.describe());
                 return false;
@@ -34,17 +35,17 @@ bool Faults::adopt(const std::string& yaml, const RunInfo& ri, const std::vector
     return true;
 }
 
-std::optional<std::size_t> Faults::adopt_live(const std::string& yaml, const RunInfo& ri) {
+std::optional<std::size_t> Faults::adopt_live(const std::string& yaml, const framework::RunInfo& ri) {
     const auto longer = read_schedule(yaml, ri);
     if (!longer) return std::nullopt;
     return schedule_.adopt(*longer);
 }
 
-void Faults::restart(Local& l, std::uint64_t k, std::vector<std::unique_ptr<Component>>& owned,
+void Faults::restart(Local& l, std::uint64_t k, std::vector<std::unique_ptr<framework::Component>>& owned,
                      ControlPlane& control) {
     const std::string name = l.comp->name();  // a copy: the old member is destroyed below
     l.restarted_at = k;
-    std::unique_ptr<Component> fresh = rebuild_(name);
+    std::unique_ptr<framework::Component> fresh = rebuild_(name);
     for (std::size_t n = 0; n < l.inputs.size(); ++n) l.inputs[n]->rebind(*fresh->inputs()[n]);
     for (std::size_t n = 0; n < l.outputs.size(); ++n) l.outputs[n].port = fresh->outputs()[n];
     for (auto& c : owned)
@@ -55,7 +56,7 @@ void Faults::restart(Local& l, std::uint64_t k, std::vector<std::unique_ptr<Comp
     control.send_status(l, msg::STATUS_MODE, "restarted by a scheduled fault");
 }
 
-bool Faults::apply(Local& l, std::uint64_t k, std::vector<std::unique_ptr<Component>>& owned,
+bool Faults::apply(Local& l, std::uint64_t k, std::vector<std::unique_ptr<framework::Component>>& owned,
                    ControlPlane& control) {
     if (l.restarted_at != k && schedule_.restarts_at(l.comp->name(), k)) restart(l, k, owned, control);
     const std::string& name = l.comp->name();
@@ -72,4 +73,4 @@ bool Faults::apply(Local& l, std::uint64_t k, std::vector<std::unique_ptr<Compon
     return false;
 }
 
-}  // namespace gdnav::runtime::host
+}  // namespace gdnav::dds::host

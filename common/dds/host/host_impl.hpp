@@ -11,6 +11,7 @@
 //   dds_host.cpp         set-up, the main loop, the listener pump
 //   host_step.cpp        stepping the members, publishing, StepDone
 //   host_configure.cpp   what the member table and live faults change in the parts (matching, rejoin)
+#include "dds/compat.hpp"
 #include "dds/host/dds_host.hpp"
 
 #include <atomic>
@@ -27,12 +28,12 @@
 #include "dds/host/host_inputs.hpp"
 #include "dds/host/host_observers.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 struct DdsHost::Impl final : host::ControlHandler {
-    const RunConfig& rc;
+    const framework::RunConfig& rc;
     HostOptions opt;
-    std::vector<std::unique_ptr<Component>> owned;
+    std::vector<std::unique_ptr<framework::Component>> owned;
     std::vector<host::Local> locals;
     host::ControlPlane control{rc, opt.rejoin};
     host::Inputs inputs{opt.free_running};
@@ -62,7 +63,7 @@ struct DdsHost::Impl final : host::ControlHandler {
     std::string step_error;
     bool step_write_failed{false};
 
-    Impl(const RunConfig& r, std::vector<std::unique_ptr<Component>> m, HostOptions o)
+    Impl(const framework::RunConfig& r, std::vector<std::unique_ptr<framework::Component>> m, HostOptions o)
         : rc(r), opt(std::move(o)), owned(std::move(m)) {}
 
     // DDS goes first: its listeners (ours, the outputs' match counts) must outlive its readers and writers.
@@ -74,7 +75,7 @@ struct DdsHost::Impl final : host::ControlHandler {
 
     void setup();
     // Member c of this process: its inputs' inboxes and readers, its outputs' writers and mirrors.
-    host::Local make_local(Component* c);
+    host::Local make_local(framework::Component* c);
     // The Tick reader and the inputs' readers made so far (served by the listener).
     std::vector<eprosima::fastdds::dds::DataReader*> data_readers() const;
 
@@ -93,7 +94,7 @@ struct DdsHost::Impl final : host::ControlHandler {
     // Member f.target, declared dead, came back (gdnav component --rejoin) and computes again from step
     // f.from_step: this host's inputs from it wait for its samples from that step on; or, if it is ours, it starts
     // there.
-    void rejoin(const faults::Fault& f);
+    void rejoin(const framework::faults::Fault& f);
     // Whether every reader and writer of the members has matched every peer the member table implies.
     bool all_matched() const;
 
@@ -105,4 +106,4 @@ struct DdsHost::Impl final : host::ControlHandler {
     void publish(host::Output& o, std::uint64_t k);
 };
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

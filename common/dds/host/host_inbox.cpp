@@ -4,9 +4,9 @@
 
 #include "framework/stride_policy.hpp"
 
-namespace gdnav::runtime::host {
+namespace gdnav::dds::host {
 
-Channel::Channel(InputBase& in)
+Channel::Channel(framework::InputBase& in)
     : port_(&in), ops_(&in.ops()), scratch_(ops_->create()), latest_(ops_->create()) {
     for (auto& s : slot_) s = ops_->create();
 }
@@ -21,8 +21,8 @@ long inbox_index(const Channel& ch, std::uint64_t next_step, std::uint64_t s) {
     const auto lag = static_cast<std::uint64_t>(ch.port()->lag());
     const std::uint64_t oldest = next_step >= lag ? next_step - lag : 0;
     if (s < oldest) return kOlder;
-    if (s >= oldest + kInboxRing) return kTooFar;
-    return static_cast<long>(s % kInboxRing);
+    if (s >= oldest + framework::kInboxRing) return kTooFar;
+    return static_cast<long>(s % framework::kInboxRing);
 }
 
 std::string rejected_note(const Local& l) {
@@ -53,7 +53,8 @@ bool hand_over(const Route& r, const Local& consumer, const void* sample, std::u
         ch.keep_latest(sample);
         return true;
     }
-    if (!on_stride(*ch.port(), s)) return true;  // a step the reader does not read (as the DDS stride filter)
+    // a step the reader does not read (as the DDS stride filter)
+    if (!framework::on_stride(*ch.port(), s)) return true;
     if (consumer.observer) ch.saw(s);  // only an observer's lost-step test reads it
     const long i = inbox_index(ch, consumer.next_step, s);
     if (i == kOlder) return true;  // no step of the reader needs it (as with a DDS sample)
@@ -71,10 +72,10 @@ std::unique_ptr<MatchCount> count_matches(eprosima::fastdds::dds::DataWriter* wr
     return m;
 }
 
-Output make_output(OutputBase* port, eprosima::fastdds::dds::DataWriter* writer) {
+Output make_output(framework::OutputBase* port, eprosima::fastdds::dds::DataWriter* writer) {
     return Output{port, writer, {}, count_matches(writer), nullptr, nullptr};
 }
 
 bool read_outside(const Output& o) { return o.matched->readers.load() > static_cast<int>(o.routes.size()); }
 
-}  // namespace gdnav::runtime::host
+}  // namespace gdnav::dds::host

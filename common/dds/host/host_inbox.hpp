@@ -16,6 +16,7 @@
 #include <fastdds/dds/publisher/DataWriterListener.hpp>
 #include <fastdds/dds/subscriber/DataReader.hpp>
 
+#include "dds/compat.hpp"
 #include "dds/host/producer_check.hpp"
 #include "dds/host/warn_limit.hpp"
 #include "framework/component.hpp"
@@ -24,7 +25,7 @@
 #include "framework/lateness.hpp"
 #include "framework/lockstep.hpp"
 
-namespace gdnav::runtime::host {
+namespace gdnav::dds::host {
 
 // Inbox of one input port: samples indexed by step (a ring of kInboxRing slots), or the latest sample for
 // free-running producers. It owns its samples (the scratch sample DDS takes into, the latest, the ring's), and each
@@ -34,21 +35,21 @@ namespace gdnav::runtime::host {
 class Channel {
 public:
     // The inbox of input `in`: its samples created with the input's message operations.
-    explicit Channel(InputBase& in);
+    explicit Channel(framework::InputBase& in);
     ~Channel();
     Channel(const Channel&) = delete;
     Channel& operator=(const Channel&) = delete;
 
-    [[nodiscard]] InputBase* port() const { return port_; }
-    [[nodiscard]] const MessageOps& ops() const { return *ops_; }
+    [[nodiscard]] framework::InputBase* port() const { return port_; }
+    [[nodiscard]] const msg::MessageOps& ops() const { return *ops_; }
     [[nodiscard]] eprosima::fastdds::dds::DataReader* reader() const { return reader_; }
     // An observer's input: its reader is made at CONFIGURE (host_observers.hpp).
     [[nodiscard]] bool deferred() const { return deferred_; }
 
     // Set-up. The member was created anew (a scheduled restart): the inbox serves its new port, lost as before.
-    void rebind(InputBase& fresh) {
+    void rebind(framework::InputBase& fresh) {
         port_ = &fresh;
-        if (lost_) ExecutorAccess::set_lost(*port_, true);
+        if (lost_) framework::ExecutorAccess::set_lost(*port_, true);
     }
     void set_reader(eprosima::fastdds::dds::DataReader* reader) { reader_ = reader; }
     void defer_reader() { deferred_ = true; }
@@ -63,18 +64,18 @@ public:
         producer_.configure(std::move(names), std::move(announce), known);
     }
     // The scheduled faults on this input (nullptr: none).
-    void set_faults(std::unique_ptr<faults::InputFaults> f) { faults_ = std::move(f); }
+    void set_faults(std::unique_ptr<framework::faults::InputFaults> f) { faults_ = std::move(f); }
     [[nodiscard]] const std::vector<std::uint32_t>& producers() const { return producers_; }
     [[nodiscard]] const ProducerCheck& producer() const { return producer_; }
     // Whether a sample written by a writer of participant p is a producer's (the check caches its decisions).
     bool from_producer(const GuidPrefix& p) { return producer_.accepts(p); }
     [[nodiscard]] bool free() const { return free_; }
-    [[nodiscard]] faults::InputFaults* faults() const { return faults_.get(); }
+    [[nodiscard]] framework::faults::InputFaults* faults() const { return faults_.get(); }
 
     // Every producer was declared dead (or none exists): the input is lost, its port too.
     void mark_lost() {
         lost_ = true;
-        ExecutorAccess::set_lost(*port_, true);
+        framework::ExecutorAccess::set_lost(*port_, true);
     }
     // A producer rejoined and computes from step from_step: samples of the steps before are lost, the ring is
     // emptied (its samples are of the time before the producer died), the port is found again at from_step.
@@ -127,7 +128,7 @@ public:
 
     // A free input's step used that was `late` steps old (-1: none was there yet).
     void note_lateness(std::int64_t late) { lateness_.add(late); }
-    [[nodiscard]] const Lateness& lateness() const { return lateness_; }
+    [[nodiscard]] const framework::Lateness& lateness() const { return lateness_; }
 
     // Rejected samples, counted at wall time now_s: the number of them the warning to log now stands for (0: none
     // to log now, warn_limit.hpp).
@@ -139,21 +140,21 @@ public:
     [[nodiscard]] const WarnLimit& too_far_local() const { return too_far_local_; }
 
 private:
-    InputBase* port_;
+    framework::InputBase* port_;
     eprosima::fastdds::dds::DataReader* reader_{nullptr};
-    const MessageOps* ops_;
+    const msg::MessageOps* ops_;
     void* scratch_;
-    std::array<void*, kInboxRing> slot_{};
-    std::array<std::uint64_t, kInboxRing> slot_step_{};
-    std::array<bool, kInboxRing> full_{};
-    std::array<bool, kInboxRing> bad_{};
+    std::array<void*, framework::kInboxRing> slot_{};
+    std::array<std::uint64_t, framework::kInboxRing> slot_step_{};
+    std::array<bool, framework::kInboxRing> full_{};
+    std::array<bool, framework::kInboxRing> bad_{};
     void* latest_;
     bool has_latest_{false};
     std::vector<std::uint32_t> producers_;  // member indices in the table
     bool free_{false};                      // produced by a free-running member
     bool lost_{false};                      // every producer declared dead
-    Lateness lateness_;                     // free channels: how late the samples used were
-    std::unique_ptr<faults::InputFaults> faults_;
+    framework::Lateness lateness_;          // free channels: how late the samples used were
+    std::unique_ptr<framework::faults::InputFaults> faults_;
     std::uint64_t lost_until_{0};  // its producer rejoined: samples of steps below this one are lost
     bool revived_{false};
     bool deferred_{false};
@@ -181,7 +182,7 @@ struct MatchCount final : eprosima::fastdds::dds::DataWriterListener {
 };
 
 struct Output {
-    OutputBase* port{nullptr};
+    framework::OutputBase* port{nullptr};
     eprosima::fastdds::dds::DataWriter* writer{nullptr};
     std::vector<Route> routes;  // local readers (their DDS readers are matched too: not counted as outside ones)
     std::unique_ptr<MatchCount> matched;  // listener of `writer` (outlives it: the host deletes DDS first)
@@ -193,10 +194,10 @@ struct Output {
 // The matched-reader count of `writer`, kept up to date from now on (the listener must outlive the writer).
 std::unique_ptr<MatchCount> count_matches(eprosima::fastdds::dds::DataWriter* writer);
 // An output of a local member: its writer, with the matched-reader count kept up to date.
-Output make_output(OutputBase* port, eprosima::fastdds::dds::DataWriter* writer);
+Output make_output(framework::OutputBase* port, eprosima::fastdds::dds::DataWriter* writer);
 
 struct Local {
-    Component* comp{nullptr};
+    framework::Component* comp{nullptr};
     std::uint32_t index{0};
     std::uint64_t next_step{0};
     bool killed{false};            // stopped by a scheduled kill (not stepped until its restart)
@@ -230,4 +231,4 @@ bool hand_over(const Route& r, const Local& consumer, const void* sample, std::u
 // Whether a reader outside the process is matched with this output's writer (then the sample is also published).
 bool read_outside(const Output& o);
 
-}  // namespace gdnav::runtime::host
+}  // namespace gdnav::dds::host

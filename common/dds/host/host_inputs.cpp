@@ -12,25 +12,27 @@
 #include "framework/executor_access.hpp"
 #include "framework/graph.hpp"
 
-namespace gdnav::runtime::host {
+namespace gdnav::dds::host {
 
 using namespace eprosima::fastdds::dds;
 
 namespace {
 
 // The faults of `schedule` on input `ch` (nullptr when none concerns it).
-std::unique_ptr<faults::InputFaults> input_faults(const Channel& ch, const faults::FaultSchedule& schedule,
-                                                  const std::vector<msg::MemberInfo>& table, const RunInfo& ri) {
+std::unique_ptr<framework::faults::InputFaults> input_faults(const Channel& ch,
+                                                             const framework::faults::FaultSchedule& schedule,
+                                                             const std::vector<msg::MemberInfo>& table,
+                                                             const framework::RunInfo& ri) {
     std::vector<std::string> names;
     for (auto i : ch.producers()) names.push_back(table[i].name().to_string());
-    auto f = std::make_unique<faults::InputFaults>(schedule, ch.port()->topic(), names, ch.ops(), ri);
+    auto f = std::make_unique<framework::faults::InputFaults>(schedule, ch.port()->topic(), names, ch.ops(), ri);
     if (f->empty()) f.reset();
     return f;
 }
 
 }  // namespace
 
-Channel* Inputs::add(InputBase* in) {
+Channel* Inputs::add(framework::InputBase* in) {
     channels_.push_back(std::make_unique<Channel>(*in));
     return channels_.back().get();
 }
@@ -48,14 +50,14 @@ std::vector<DataReader*> Inputs::readers() const {
 }
 
 void Inputs::configure(const Local& l, const std::vector<msg::MemberInfo>& table,
-                       const faults::FaultSchedule& schedule, const RunInfo& ri) {
+                       const framework::faults::FaultSchedule& schedule, const framework::RunInfo& ri) {
     for (Channel* ch : l.inputs) {
         std::vector<std::uint32_t> producers;
         MemberNames names;
         std::vector<bool> announce;
         bool runs_free = free_running_;
         for (std::uint32_t i = 0; i < table.size(); ++i) {
-            const auto outs = split_topics(table[i].outputs().to_string());
+            const auto outs = framework::split_topics(table[i].outputs().to_string());
             if (std::find(outs.begin(), outs.end(), ch->port()->topic()) != outs.end()) {
                 producers.push_back(i);
                 runs_free = runs_free || table[i].free_running();
@@ -82,9 +84,9 @@ bool Inputs::matched() const {
     return true;
 }
 
-void Inputs::read(Local& l, Channel& ch, const RunInfo& ri) {
+void Inputs::read(Local& l, Channel& ch, const framework::RunInfo& ri) {
     if (ch.reader() == nullptr) return;  // an observer's input before CONFIGURE (host_observers.hpp)
-    const MessageOps& ops = ch.ops();
+    const msg::MessageOps& ops = ch.ops();
     SampleInfo info;
     while (ch.reader()->take_next_sample(ch.scratch(), &info) == ReturnCode_t::RETCODE_OK) {
         if (!info.valid_data || ops.run_of(ch.scratch()) != ri.run_index) continue;
@@ -122,7 +124,7 @@ void Inputs::read(Local& l, Channel& ch, const RunInfo& ri) {
 }
 
 void Inputs::reject_foreign(const Local& l, Channel& ch, const GuidPrefix& from, std::uint64_t s) {
-    if (const std::uint64_t n = ch.reject_foreign(steady_now_s())) {
+    if (const std::uint64_t n = ch.reject_foreign(framework::steady_now_s())) {
         std::ostringstream who;
         who << from;
         spdlog::warn("member '{}', input '{}': {} sample(s) not written by its producer ({}) dropped, {} in all (the "
@@ -133,7 +135,7 @@ void Inputs::reject_foreign(const Local& l, Channel& ch, const GuidPrefix& from,
 }
 
 void Inputs::reject_stamp(const Local& l, Channel& ch, std::uint64_t s, double t_s, const char* why) {
-    if (const std::uint64_t n = ch.reject_stamp(steady_now_s()))
+    if (const std::uint64_t n = ch.reject_stamp(framework::steady_now_s()))
         spdlog::warn("member '{}', input '{}': {} sample(s) with a bad stamp rejected, {} in all (the last: step {}, "
                      "t_s {}: {}; its step is {})",
                      l.comp->name(), ch.port()->topic(), n, ch.bad_stamp().total(), s, t_s, why, l.next_step);
@@ -141,55 +143,55 @@ void Inputs::reject_stamp(const Local& l, Channel& ch, std::uint64_t s, double t
 
 void Inputs::warn_too_far(const Local& l, Channel& ch, std::uint64_t s) {
     if (l.killed) return;  // a member killed by a fault does not read its inputs
-    if (const std::uint64_t n = ch.drop_too_far(steady_now_s()))
+    if (const std::uint64_t n = ch.drop_too_far(framework::steady_now_s()))
         spdlog::warn("input '{}': {} sample(s) too far ahead of step {} dropped, {} in all (the last: step {})",
                      ch.port()->topic(), n, l.next_step, ch.too_far_local().total(), s);
 }
 
 bool Inputs::ready(const Local& l, std::uint64_t k) const {
     for (Channel* ch : l.inputs) {
-        InputBase& port = *ch->port();
+        framework::InputBase& port = *ch->port();
         if (ch->lost()) {
-            ExecutorAccess::bind(port, nullptr);
+            framework::ExecutorAccess::bind(port, nullptr);
             continue;
         }
         if (ch->free()) {
-            ExecutorAccess::bind(port, ch->has_latest() ? ch->latest() : nullptr);
+            framework::ExecutorAccess::bind(port, ch->has_latest() ? ch->latest() : nullptr);
             continue;
         }
         const std::uint64_t lag = static_cast<std::uint64_t>(port.lag());
         if (k < lag) {
-            ExecutorAccess::bind(port, nullptr);
+            framework::ExecutorAccess::bind(port, nullptr);
             continue;
         }
         const std::uint64_t need = k - lag;
-        if (!on_stride(port, need)) {  // not a step it reads: nothing sent, nothing to wait for
-            ExecutorAccess::bind(port, nullptr);
+        if (!framework::on_stride(port, need)) {  // not a step it reads: nothing sent, nothing to wait for
+            framework::ExecutorAccess::bind(port, nullptr);
             continue;
         }
         if (need < ch->lost_until()) {  // its producer was dead then
-            ExecutorAccess::set_lost(port, true);
+            framework::ExecutorAccess::set_lost(port, true);
             continue;
         }
-        if (ch->revived()) ExecutorAccess::set_lost(port, false);
-        faults::InputFaults* f = ch->faults();
+        if (ch->revived()) framework::ExecutorAccess::set_lost(port, false);
+        framework::faults::InputFaults* f = ch->faults();
         if (f != nullptr && f->producer_killed(need)) {  // nothing was published: do not wait
-            ExecutorAccess::set_lost(port, true);
+            framework::ExecutorAccess::set_lost(port, true);
             continue;
         }
-        const std::size_t i = need % kInboxRing;
+        const std::size_t i = need % framework::kInboxRing;
         if (!ch->holds(i, need)) return false;
         if (ch->bad(i)) {  // rejected (a bad stamp): not available at this step, as a dropped sample
-            ExecutorAccess::bind(port, nullptr);
+            framework::ExecutorAccess::bind(port, nullptr);
             continue;
         }
         if (f != nullptr) {
             const auto d = f->apply(need, ch->slot(i));
-            ExecutorAccess::set_lost(port, d.lost);
-            ExecutorAccess::bind(port, d.data);
+            framework::ExecutorAccess::set_lost(port, d.lost);
+            framework::ExecutorAccess::bind(port, d.data);
             continue;
         }
-        ExecutorAccess::bind(port, ch->slot(i));
+        framework::ExecutorAccess::bind(port, ch->slot(i));
     }
     return true;
 }
@@ -229,8 +231,8 @@ void Inputs::revive(std::uint32_t i, const std::string& name, std::uint64_t from
     }
 }
 
-void Inputs::extend_faults(const faults::FaultSchedule& schedule, std::size_t first,
-                           const std::vector<msg::MemberInfo>& table, const RunInfo& ri) {
+void Inputs::extend_faults(const framework::faults::FaultSchedule& schedule, std::size_t first,
+                           const std::vector<msg::MemberInfo>& table, const framework::RunInfo& ri) {
     for (auto& ch : channels_) {
         if (ch->producers().empty()) continue;
         if (ch->faults() != nullptr)
@@ -253,11 +255,11 @@ void Inputs::report_rejected(const std::vector<Local>& locals) {
 void Inputs::report_lateness(const std::vector<Local>& locals, const std::string& out_dir) const {
     if (free_running_) return;  // a free-running member's own inputs are not a deadline
     for (const auto& l : locals) {
-        std::vector<std::pair<std::string, const Lateness*>> inputs;
+        std::vector<std::pair<std::string, const framework::Lateness*>> inputs;
         for (const Channel* ch : l.inputs)
             if (ch->free()) inputs.emplace_back(ch->port()->topic(), &ch->lateness());
-        runtime::report_lateness(l.comp->name(), inputs, out_dir);
+        framework::report_lateness(l.comp->name(), inputs, out_dir);
     }
 }
 
-}  // namespace gdnav::runtime::host
+}  // namespace gdnav::dds::host

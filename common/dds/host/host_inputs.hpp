@@ -10,11 +10,12 @@
 #include <string>
 #include <vector>
 
+#include "dds/compat.hpp"
 #include "dds/host/host_inbox.hpp"
 #include "framework/faults/fault_schedule.hpp"
 #include "msgs/messages.hpp"
 
-namespace gdnav::runtime::host {
+namespace gdnav::dds::host {
 
 class Inputs {
 public:
@@ -27,20 +28,20 @@ public:
     // themselves: producer_check.hpp). Call before configure().
     void identify(const Participants* known, std::function<bool(const std::string&)> must_announce);
     // The inbox of input port `in`, its samples allocated; its reader is set by the caller.
-    Channel* add(InputBase* in);
+    Channel* add(framework::InputBase* in);
     // Every reader made so far.
     [[nodiscard]] std::vector<eprosima::fastdds::dds::DataReader*> readers() const;
 
     // From the clock's member table: the producers of each of member l's inputs, and the scheduled faults on them
     // (`schedule`, none when empty); an input nobody produces is lost.
-    void configure(const Local& l, const std::vector<msg::MemberInfo>& table, const faults::FaultSchedule& schedule,
-                   const RunInfo& ri);
+    void configure(const Local& l, const std::vector<msg::MemberInfo>& table,
+                   const framework::faults::FaultSchedule& schedule, const framework::RunInfo& ri);
     // Whether every input's reader is matched with all its producers.
     [[nodiscard]] bool matched() const;
 
     // The samples that arrived for member l's input `ch` (of run ri), into its inbox by step; others' samples and
     // bad stamps are rejected.
-    void read(Local& l, Channel& ch, const RunInfo& ri);
+    void read(Local& l, Channel& ch, const framework::RunInfo& ri);
     // Binds member l's inputs for step k. False when a sample it waits for is not here yet.
     bool ready(const Local& l, std::uint64_t k) const;
     // Free inputs of a step about to run: how many steps old the sample used is (once per executed step).
@@ -54,8 +55,8 @@ public:
     // Producer `i` (named `name`) rejoined at step from_step: its lost inputs wait for its samples from then on.
     void revive(std::uint32_t i, const std::string& name, std::uint64_t from_step);
     // A longer fault schedule (faults from index `first` are new): inputs take on the new faults.
-    void extend_faults(const faults::FaultSchedule& schedule, std::size_t first,
-                       const std::vector<msg::MemberInfo>& table, const RunInfo& ri);
+    void extend_faults(const framework::faults::FaultSchedule& schedule, std::size_t first,
+                       const std::vector<msg::MemberInfo>& table, const framework::RunInfo& ri);
 
     // Free-running inputs (hardware-in-the-loop): summary lines and <out>/lateness/<member>.yaml.
     void report_lateness(const std::vector<Local>& locals, const std::string& out_dir) const;
@@ -73,4 +74,4 @@ private:
     std::vector<std::unique_ptr<Channel>> channels_;
 };
 
-}  // namespace gdnav::runtime::host
+}  // namespace gdnav::dds::host

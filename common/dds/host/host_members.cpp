@@ -2,7 +2,7 @@
 
 #include "framework/graph.hpp"
 
-namespace gdnav::runtime::host {
+namespace gdnav::dds::host {
 
 std::uint32_t MemberTable::index_of(const std::string& name) const {
     std::uint32_t index = UINT32_MAX;
@@ -14,8 +14,8 @@ std::uint32_t MemberTable::index_of(const std::string& name) const {
 int MemberTable::readers_of(const std::string& topic) const {
     int n = 0;
     for (const auto& m : table_)
-        for (const auto& t : split_topics(m.inputs().to_string())) n += (t == topic);
+        for (const auto& t : framework::split_topics(m.inputs().to_string())) n += (t == topic);
     return n;
 }
 
-}  // namespace gdnav::runtime::host
+}  // namespace gdnav::dds::host

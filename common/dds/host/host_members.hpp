@@ -6,9 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "dds/compat.hpp"
 #include "msgs/messages.hpp"
 
-namespace gdnav::runtime::host {
+namespace gdnav::dds::host {
 
 class MemberTable {
 public:
@@ -41,4 +42,4 @@ private:
     std::uint64_t revived_mask_{0};  // members that rejoined: their old dead bit no longer counts
 };
 
-}  // namespace gdnav::runtime::host
+}  // namespace gdnav::dds::host

@@ -8,11 +8,11 @@
 #include "framework/stride_policy.hpp"
 #include "dds/host/mirror.hpp"
 
-namespace gdnav::runtime::host {
+namespace gdnav::dds::host {
 
 using namespace eprosima::fastdds::dds;
 
-bool hosted_as_observer(const Component& c) { return c.observer() && c.outputs().empty(); }
+bool hosted_as_observer(const framework::Component& c) { return c.observer() && c.outputs().empty(); }
 
 void add_mirror(Output& o, DataWriter* mirror) {
     o.mirror = mirror;
@@ -31,8 +31,8 @@ bool step_missed(const Local& l, std::uint64_t k) {
         const auto lag = static_cast<std::uint64_t>(ch->port()->lag());
         if (k < lag) continue;
         const std::uint64_t need = k - lag;
-        if (!on_stride(*ch->port(), need) || need < ch->lost_until()) continue;
-        const std::size_t i = need % kInboxRing;
+        if (!framework::on_stride(*ch->port(), need) || need < ch->lost_until()) continue;
+        const std::size_t i = need % framework::kInboxRing;
         if (!ch->holds(i, need) && ch->saw_after(need)) return true;
     }
     return false;
@@ -40,17 +40,17 @@ bool step_missed(const Local& l, std::uint64_t k) {
 
 void catch_up(Local& l, const Channel& ch, std::uint64_t s) {
     const auto lag = static_cast<std::uint64_t>(ch.port()->lag());
-    const std::uint64_t first = s + lag + 1 - kInboxRing;
+    const std::uint64_t first = s + lag + 1 - framework::kInboxRing;
     l.skipped += first - l.next_step;
     l.next_step = first;
 }
 
 DataReader* topic_reader(DdsContext& dds, const Channel& ch, bool observer) {
-    return dds.reader(ch.port()->topic(), ch.ops(), kDataReaderProfile, stride_of(*ch.port()), observer);
+    return dds.reader(ch.port()->topic(), ch.ops(), kDataReaderProfile, framework::stride_of(*ch.port()), observer);
 }
 
-bool Observers::defers(const Local& l, const InputBase& in) const {
-    return l.observer && may_read_mirror(stride_of(in), !mirrors());
+bool Observers::defers(const Local& l, const framework::InputBase& in) const {
+    return l.observer && may_read_mirror(framework::stride_of(in), !mirrors());
 }
 
 void Observers::make_readers(std::vector<Local>& locals, const std::vector<msg::MemberInfo>& table, DdsContext& dds,
@@ -58,7 +58,7 @@ void Observers::make_readers(std::vector<Local>& locals, const std::vector<msg::
     // A producer writes a mirror when it is a gdnav host in another process: configured, not external, not here.
     const auto writes_mirror = [&](const std::string& name) {
         const bool configured = std::any_of(rc_.members.begin(), rc_.members.end(),
-                                            [&](const MemberSpec& m) { return m.name == name; });
+                                            [&](const framework::MemberSpec& m) { return m.name == name; });
         const bool here = std::any_of(locals.begin(), locals.end(),
                                       [&](const Local& l) { return l.comp->name() == name; });
         return configured && !rc_.is_external(name) && !here;
@@ -69,7 +69,7 @@ void Observers::make_readers(std::vector<Local>& locals, const std::vector<msg::
             std::vector<std::string> names;
             for (auto i : ch->producers()) names.push_back(table[i].name().to_string());
             const std::string& topic = ch->port()->topic();
-            const bool mirror = reads_mirror(stride_of(*ch->port()), !mirrors(), names, writes_mirror);
+            const bool mirror = reads_mirror(framework::stride_of(*ch->port()), !mirrors(), names, writes_mirror);
             ch->set_reader(mirror ? dds.reader(mirror_topic(topic), ch->ops(), kDataReaderProfile, 1, true)
                                   : topic_reader(dds, *ch, true));
             ch->reader()->set_listener(listener, StatusMask::data_available());
@@ -92,4 +92,4 @@ void Observers::report(const std::vector<Local>& locals, std::uint64_t steps) {
     }
 }
 
-}  // namespace gdnav::runtime::host
+}  // namespace gdnav::dds::host

@@ -7,15 +7,16 @@
 
 #include <fastdds/dds/subscriber/DataReaderListener.hpp>
 
+#include "dds/compat.hpp"
 #include "dds/dds_context.hpp"
 #include "dds/host/host_inbox.hpp"
 #include "framework/run_config.hpp"
 #include "msgs/messages.hpp"
 
-namespace gdnav::runtime::host {
+namespace gdnav::dds::host {
 
 // An observer as the host treats it (docs/protocol.md §6.4): observer() and no outputs to hold anybody up.
-bool hosted_as_observer(const Component& c);
+bool hosted_as_observer(const framework::Component& c);
 
 // Gives `o` its mirror writer, with its matched-reader count kept up to date as well.
 void add_mirror(Output& o, eprosima::fastdds::dds::DataWriter* mirror);
@@ -37,13 +38,13 @@ eprosima::fastdds::dds::DataReader* topic_reader(DdsContext& dds, const Channel&
 
 class Observers {
 public:
-    explicit Observers(const RunConfig& rc) : rc_(rc) {}
+    explicit Observers(const framework::RunConfig& rc) : rc_(rc) {}
 
     // Whether this run writes and reads mirrors (not in a secure run: a PKI grants each identity its own topics).
     [[nodiscard]] bool mirrors() const { return rc_.security_dir.empty(); }
 
     // Whether observer `l`'s input `in` waits for the member table for its reader (it may read a mirror).
-    [[nodiscard]] bool defers(const Local& l, const InputBase& in) const;
+    [[nodiscard]] bool defers(const Local& l, const framework::InputBase& in) const;
 
     // The readers of the deferred inputs, once the member table names the producers: the mirror when every producer
     // writes one, else the topic itself (with the stride filter). They are served by `listener`.
@@ -54,7 +55,7 @@ public:
     static void report(const std::vector<Local>& locals, std::uint64_t steps);
 
 private:
-    const RunConfig& rc_;
+    const framework::RunConfig& rc_;
 };
 
-}  // namespace gdnav::runtime::host
+}  // namespace gdnav::dds::host

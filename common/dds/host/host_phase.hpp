@@ -4,16 +4,17 @@
 // has been silent.
 #include <cstdint>
 
+#include "dds/compat.hpp"
 #include "framework/component.hpp"
 #include "framework/run_config.hpp"
 #include "msgs/messages.hpp"
 
-namespace gdnav::runtime::host {
+namespace gdnav::dds::host {
 
 // The run's timing: from the local config, replaced by the clock's CONFIGURE (protocol version >= 1), so a member
 // that knows only the domain and the run id (an external client) steps exactly like a built-in one.
 struct RunTiming {
-    RunInfo ri;
+    framework::RunInfo ri;
     std::uint64_t window_steps{0};
     std::uint64_t done_every{1};
     double member_timeout_s{0.0};
@@ -25,7 +26,7 @@ public:
     // waiting for Ticks; Running: Ticks came after READY.
     enum class Phase { Announce, Matching, Ready, Running };
 
-    explicit RunPhase(const RunConfig& rc);
+    explicit RunPhase(const framework::RunConfig& rc);
 
     [[nodiscard]] Phase phase() const { return phase_; }
     [[nodiscard]] const RunTiming& timing() const { return timing_; }
@@ -76,4 +77,4 @@ private:
     double start_s_{0.0};
 };
 
-}  // namespace gdnav::runtime::host
+}  // namespace gdnav::dds::host

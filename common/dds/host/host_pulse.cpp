@@ -4,7 +4,7 @@
 
 #include "dds/process/process_priority.hpp"
 
-namespace gdnav::runtime::host {
+namespace gdnav::dds::host {
 
 Pulse::Pulse() : thread_(&Pulse::loop, this) {}
 
@@ -16,7 +16,7 @@ void Pulse::attach(eprosima::fastdds::dds::DataWriter* writer) {
 }
 
 void Pulse::loop() {
-    const auto period = std::chrono::duration<double>(kHeartbeatPeriodS);
+    const auto period = std::chrono::duration<double>(framework::kHeartbeatPeriodS);
     std::unique_lock<std::mutex> lock(mtx_);
     tid_ = current_tid();
     cv_.notify_all();
@@ -24,8 +24,8 @@ void Pulse::loop() {
         cv_.wait_for(lock, period);
         if (stop_) break;
         // Only when the main loop is late: while it runs, its own heartbeats carry the current step.
-        const double now = steady_now_s();
-        if (beat_.empty() || now - sent_s_ < 1.5 * kHeartbeatPeriodS) continue;
+        const double now = framework::steady_now_s();
+        if (beat_.empty() || now - sent_s_ < 1.5 * framework::kHeartbeatPeriodS) continue;
         for (msg::ComponentStatus& s : beat_) writer_->write(&s);
         sent_s_ = now;
     }
@@ -46,4 +46,4 @@ void Pulse::stop() {
     if (thread_.joinable()) thread_.join();
 }
 
-}  // namespace gdnav::runtime::host
+}  // namespace gdnav::dds::host

@@ -11,10 +11,11 @@
 
 #include <fastdds/dds/publisher/DataWriter.hpp>
 
+#include "dds/compat.hpp"
 #include "framework/lockstep.hpp"
 #include "msgs/messages.hpp"
 
-namespace gdnav::runtime::host {
+namespace gdnav::dds::host {
 
 class Pulse {
 public:
@@ -30,7 +31,7 @@ public:
     // Whether the main loop's heartbeats are due at `now`; when they are, the next ones are due a period later.
     bool due(double now) {
         if (now < next_s_) return false;
-        next_s_ = now + kHeartbeatPeriodS;
+        next_s_ = now + framework::kHeartbeatPeriodS;
         return true;
     }
     // The next heartbeats are due at once (READY, a fault schedule to acknowledge).
@@ -69,4 +70,4 @@ private:
     std::thread thread_;  // last: it starts once the members above are made
 };
 
-}  // namespace gdnav::runtime::host
+}  // namespace gdnav::dds::host

@@ -6,7 +6,7 @@
 #include "files/write_error.hpp"
 #include "framework/executor_access.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 bool DdsHost::Impl::advance() {
     if (!step_error.empty()) return false;  // leaving the run
@@ -42,8 +42,8 @@ bool DdsHost::Impl::advance() {
 }
 
 void DdsHost::Impl::step(host::Local& l, std::uint64_t k) {
-    const RunInfo& ri = control.run().timing().ri;
-    const StepContext ctx{k, ri.time_of(k), ri.dt_s, k + 1 == ri.steps};
+    const framework::RunInfo& ri = control.run().timing().ri;
+    const framework::StepContext ctx{k, ri.time_of(k), ri.dt_s, k + 1 == ri.steps};
     try {
         l.comp->step(ctx);
     } catch (const std::exception& e) {
@@ -61,7 +61,7 @@ void DdsHost::Impl::step(host::Local& l, std::uint64_t k) {
     }
     // A mode change goes to the clock, which logs it for the run: here only at debug level, so that each event is
     // logged once.
-    for (const auto& m : ExecutorAccess::take_status(*l.comp)) {
+    for (const auto& m : framework::ExecutorAccess::take_status(*l.comp)) {
         spdlog::debug("[{}] step {} t={:.2f} s: {}", l.comp->name(), k, ctx.t_s, m);
         control.send_status(l, msg::STATUS_MODE, m);
     }
@@ -75,4 +75,4 @@ void DdsHost::Impl::publish(host::Output& o, std::uint64_t k) {
     if (host::mirror_due(o, k)) o.mirror->write(o.port->data());
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

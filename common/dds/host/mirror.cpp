@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 std::string mirror_topic(const std::string& topic) {
     return topic + "/every_" + std::to_string(kMirrorStride) + "_steps";
@@ -18,4 +18,4 @@ bool reads_mirror(std::uint64_t stride, bool secure, const std::vector<std::stri
     return std::all_of(producers.begin(), producers.end(), writes_mirror);
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

@@ -16,7 +16,9 @@
 #include <string>
 #include <vector>
 
-namespace gdnav::runtime {
+#include "dds/compat.hpp"
+
+namespace gdnav::dds {
 
 inline constexpr std::uint64_t kMirrorStride = 10;
 
@@ -33,4 +35,4 @@ bool may_read_mirror(std::uint64_t stride, bool secure);
 bool reads_mirror(std::uint64_t stride, bool secure, const std::vector<std::string>& producers,
                   const std::function<bool(const std::string&)>& writes_mirror);
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace gdnav::runtime::host {
+namespace gdnav::dds::host {
 
 void ProducerCheck::configure(MemberNames producers, std::vector<bool> must_announce, const Participants* known) {
     producers_ = std::move(producers);
@@ -29,4 +29,4 @@ std::string ProducerCheck::names() const {
     return s;
 }
 
-}  // namespace gdnav::runtime::host
+}  // namespace gdnav::dds::host

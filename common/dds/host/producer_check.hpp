@@ -11,9 +11,10 @@
 #include <utility>
 #include <vector>
 
+#include "dds/compat.hpp"
 #include "dds/participants.hpp"
 
-namespace gdnav::runtime::host {
+namespace gdnav::dds::host {
 
 class ProducerCheck {
 public:
@@ -46,4 +47,4 @@ private:
     std::vector<std::pair<GuidPrefix, bool>> decided_;  // for the participants' generation_
 };
 
-}  // namespace gdnav::runtime::host
+}  // namespace gdnav::dds::host

@@ -4,7 +4,9 @@
 // per period of wall time. Every occurrence is counted, so the run's summary can give the total.
 #include <cstdint>
 
-namespace gdnav::runtime::host {
+#include "dds/compat.hpp"
+
+namespace gdnav::dds::host {
 
 class WarnLimit {
 public:
@@ -31,4 +33,4 @@ private:
     std::uint64_t unlogged_{0};
 };
 
-}  // namespace gdnav::runtime::host
+}  // namespace gdnav::dds::host

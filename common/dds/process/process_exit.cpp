@@ -8,7 +8,7 @@
 
 #include <spdlog/spdlog.h>
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 namespace {
 std::atomic<bool> g_keep{false};
@@ -34,4 +34,4 @@ void bound_teardown(int code, double deadline_s) {
     }).detach();
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

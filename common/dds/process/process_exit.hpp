@@ -7,7 +7,8 @@
 // runtime.md, "Shutdown"). A run's processes leave together, so the DISPOSEs come in a burst while slower peers
 // still write their results. A process that keeps its participants until it ends sends none: its peers drop it
 // when its lease expires, on their timer thread alone, where the race cannot happen.
-namespace gdnav::runtime {
+#include "dds/compat.hpp"
+namespace gdnav::dds {
 
 // From now on DdsContext's destructor deletes the readers and writers but not the participant; the process must then
 // end through exit_keeping_participants (a normal exit would delete it from the factory's static destructor).
@@ -24,4 +25,4 @@ void keep_participants_until_exit();
 // process that never ends holds its launcher and every run queued behind it.
 void bound_teardown(int code, double deadline_s);
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

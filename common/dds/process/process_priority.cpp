@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <system_error>
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 namespace {
 
@@ -45,4 +45,4 @@ std::string lower_cpu_priority(int nice, int keep_tid) {
     return {};
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

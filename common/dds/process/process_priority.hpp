@@ -5,7 +5,9 @@
 // of the process is changed, and threads created later inherit the creating thread's value.
 #include <string>
 
-namespace gdnav::runtime {
+#include "dds/compat.hpp"
+
+namespace gdnav::dds {
 
 // Sets every thread of this process but `keep_tid` (0: none) to `nice` (1..19; only ever raised: a thread already
 // nicer keeps its value). The kept thread is the host's heartbeat pulse: a starved observer falls behind and skips
@@ -19,4 +21,4 @@ int thread_nice(int tid = 0);
 // The calling thread's id (gettid).
 int current_tid();
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

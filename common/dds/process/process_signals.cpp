@@ -2,7 +2,7 @@
 
 #include <csignal>
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 namespace {
 volatile std::sig_atomic_t g_signal = 0;
 extern "C" void on_stop_signal(int sig) { g_signal = sig; }
@@ -19,4 +19,4 @@ void install_stop_signal_handlers() {
 bool stop_requested() { return g_signal != 0; }
 int stop_signal() { return static_cast<int>(g_signal); }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

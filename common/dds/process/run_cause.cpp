@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <string>
 
-namespace gdnav::runtime {
+namespace gdnav::dds {
 
 void tell_launcher(std::string_view line) {
     const char* env = std::getenv(kCauseFdEnv);
@@ -55,4 +55,4 @@ std::vector<std::string> CausePipe::read_lines() {
     return lines;
 }
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

@@ -10,7 +10,9 @@
 #include <string_view>
 #include <vector>
 
-namespace gdnav::runtime {
+#include "dds/compat.hpp"
+
+namespace gdnav::dds {
 
 inline constexpr const char* kCauseFdEnv = "GDNAV_CAUSE_FD";
 
@@ -35,4 +37,4 @@ private:
     std::string pending_;
 };
 
-}  // namespace gdnav::runtime
+}  // namespace gdnav::dds

@@ -2,7 +2,7 @@
 
 #include <fastdds/dds/domain/qos/DomainParticipantQos.hpp>
 
-namespace gdnav::runtime::security {
+namespace gdnav::dds::security {
 
 namespace fs = std::filesystem;
 
@@ -36,4 +36,4 @@ void apply(eprosima::fastdds::dds::DomainParticipantQos& qos, const fs::path& di
     set("dds.sec.crypto.plugin", "builtin.AES-GCM-GMAC");
 }
 
-}  // namespace gdnav::runtime::security
+}  // namespace gdnav::dds::security

@@ -13,11 +13,13 @@
 #include <string>
 #include <vector>
 
+#include "dds/compat.hpp"
+
 namespace eprosima::fastdds::dds {
 class DomainParticipantQos;
 }
 
-namespace gdnav::runtime::security {
+namespace gdnav::dds::security {
 
 inline constexpr const char* kClockIdentity = "clock";
 inline constexpr const char* kComposedIdentity = "composed";
@@ -36,4 +38,4 @@ std::string subject_name(const std::string& identity);
 void apply(eprosima::fastdds::dds::DomainParticipantQos& qos, const std::filesystem::path& dir,
            const std::string& identity);
 
-}  // namespace gdnav::runtime::security
+}  // namespace gdnav::dds::security

@@ -9,7 +9,7 @@
 #include "framework/fields/field_table.hpp"
 #include "framework/topic_types.hpp"
 
-namespace gdnav::runtime::faults {
+namespace gdnav::framework::faults {
 
 using config::Config;
 using config::ConfigError;
@@ -34,7 +34,7 @@ std::string seconds(double t) { return fmt::format("{:g} s", t); }
 
 // The field table of a topic's type (nullptr for an unknown topic or a type without a table).
 const fields::TypeFields* table_of(const std::string& topic) {
-    const MessageOps* ops = find_topic(topic);
+    const msg::MessageOps* ops = find_topic(topic);
     return ops ? fields::find_type_fields(ops->type_name) : nullptr;
 }
 
@@ -304,4 +304,4 @@ std::uint64_t FaultSchedule::alive_again(const std::string& member, std::uint64_
     return k;
 }
 
-}  // namespace gdnav::runtime::faults
+}  // namespace gdnav::framework::faults

@@ -26,9 +26,10 @@
 #include <vector>
 
 #include "config/config.hpp"
+#include "framework/compat.hpp"
 #include "framework/component.hpp"
 
-namespace gdnav::runtime::faults {
+namespace gdnav::framework::faults {
 
 // Rejoin: not written by users; the clock records with it that a member declared dead came back (gdnav component
 // --rejoin) and is stepped again from at_s.
@@ -103,4 +104,4 @@ private:
     std::deque<Fault> faults_;  // kills carry their restart step in until_step; restart entries are kept too
 };
 
-}  // namespace gdnav::runtime::faults
+}  // namespace gdnav::framework::faults

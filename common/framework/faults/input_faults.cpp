@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <limits>
 
-namespace gdnav::runtime::faults {
+namespace gdnav::framework::faults {
 
 InputFaults::InputFaults(const FaultSchedule& schedule, const std::string& topic, std::vector<std::string> producers,
-                         const MessageOps& ops, const RunInfo& run)
+                         const msg::MessageOps& ops, const RunInfo& run)
     : schedule_(schedule), topic_(topic), producers_(std::move(producers)), ops_(ops), run_(run) {
     extend(0);
 }
@@ -150,4 +150,4 @@ InputFaults::Delivery InputFaults::apply(std::uint64_t j, const void* sample) {
     return memo_ = {cur, false};
 }
 
-}  // namespace gdnav::runtime::faults
+}  // namespace gdnav::framework::faults

@@ -17,17 +17,18 @@
 #include <string>
 #include <vector>
 
+#include "framework/compat.hpp"
 #include "random/stream.hpp"
 #include "framework/component.hpp"
 #include "framework/faults/fault_schedule.hpp"
 #include "framework/fields/field_table.hpp"
 
-namespace gdnav::runtime::faults {
+namespace gdnav::framework::faults {
 
 class InputFaults {
 public:
     InputFaults(const FaultSchedule& schedule, const std::string& topic, std::vector<std::string> producers,
-                const MessageOps& ops, const RunInfo& run);
+                const msg::MessageOps& ops, const RunInfo& run);
     ~InputFaults();
     InputFaults(const InputFaults&) = delete;
     InputFaults& operator=(const InputFaults&) = delete;
@@ -62,7 +63,7 @@ private:
     const FaultSchedule& schedule_;
     std::string topic_;
     std::vector<std::string> producers_;
-    const MessageOps& ops_;
+    const msg::MessageOps& ops_;
     RunInfo run_;
     std::vector<Active> faults_;
     std::vector<void*> history_;            // delay: samples by step (ring)
@@ -73,4 +74,4 @@ private:
     Delivery memo_;
 };
 
-}  // namespace gdnav::runtime::faults
+}  // namespace gdnav::framework::faults

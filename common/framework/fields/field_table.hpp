@@ -6,7 +6,9 @@
 #include <string>
 #include <string_view>
 
-namespace gdnav::runtime::fields {
+#include "framework/compat.hpp"
+
+namespace gdnav::framework::fields {
 
 enum class Kind : std::uint8_t { F64, Bool, U8, U32, U64, Enum, String };
 
@@ -29,4 +31,4 @@ struct TypeFields {
 // The table of a type; nullptr when the generator skipped it (a member the bindings do not support).
 const TypeFields* find_type_fields(std::string_view type_name);
 
-}  // namespace gdnav::runtime::fields
+}  // namespace gdnav::framework::fields

@@ -181,7 +181,7 @@ def emit(parser, idl_name):
     out += [f"//   {s}" for s in skipped] or ["//   none"]
     out += ["#include <array>", "#include <string>", "#include <string_view>", "#include <type_traits>", "",
             '#include "framework/fields/field_table.hpp"', f'#include "{idl_name.rsplit(".", 1)[0]}.h"', "",
-            "namespace gdnav::runtime::fields {", "namespace {", ""]
+            "namespace gdnav::framework::fields {", "namespace {", ""]
     for q, fields in tables:
         T = cxx(q)
         ident = q.replace("::", "_")
@@ -211,7 +211,7 @@ def emit(parser, idl_name):
     for q, fields in tables:
         out.append(f'        {{"{q}", k_{q.replace("::", "_")}, std::size(k_{q.replace("::", "_")})}},')
     out += ["    };", "    for (const TypeFields& t : all)", "        if (type_name == t.type_name) return &t;",
-            "    return nullptr;", "}", "", "}  // namespace gdnav::runtime::fields", ""]
+            "    return nullptr;", "}", "", "}  // namespace gdnav::framework::fields", ""]
     return "\n".join(out)
 
 

@@ -10,7 +10,7 @@
 #include "config/config.hpp"
 #include "files/write_error.hpp"
 
-namespace gdnav::app {
+namespace gdnav::io::flight_log {
 
 void input_error(const std::string& where, const std::string& what) {
     throw config::ConfigError("config error: " + where + ": " + what);
@@ -145,4 +145,4 @@ void CsvWriter::close() {
     if (bad || !closed) files::throw_write_error(path_, errno ? errno : EIO);
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::io::flight_log

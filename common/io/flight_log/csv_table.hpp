@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace gdnav::app {
+namespace gdnav::io::flight_log {
 
 // Throws the one-line ConfigError "config error: WHERE: WHAT" of a flight log's files.
 [[noreturn]] void input_error(const std::string& where, const std::string& what);
@@ -41,4 +41,4 @@ private:
     std::size_t columns_{0};
 };
 
-}  // namespace gdnav::app
+}  // namespace gdnav::io::flight_log

@@ -13,7 +13,7 @@
 #include "msgs/messages.hpp"
 #include "io/recording/record_file.hpp"
 
-namespace gdnav::app {
+namespace gdnav::io::flight_log {
 
 namespace fs = std::filesystem;
 
@@ -28,7 +28,7 @@ using SamplePtr = std::unique_ptr<void, void (*)(void*)>;
 // A record decoded sample by sample.
 class RecordSamples {
 public:
-    RecordSamples(recorder::TopicRecord r) : r_(std::move(r)), dec_(*r_.ops), s_(r_.ops->create(), r_.ops->destroy) {}
+    RecordSamples(recording::TopicRecord r) : r_(std::move(r)), dec_(*r_.ops), s_(r_.ops->create(), r_.ops->destroy) {}
     [[nodiscard]] std::size_t size() const { return r_.entries.size(); }
     [[nodiscard]] std::uint64_t step(std::size_t i) const { return r_.entries[i].step; }
     void* load(std::size_t i) {
@@ -39,8 +39,8 @@ public:
     }
 
 private:
-    recorder::TopicRecord r_;
-    recorder::SampleDecoder dec_;
+    recording::TopicRecord r_;
+    recording::SampleDecoder dec_;
     SamplePtr s_;
 };
 
@@ -64,11 +64,11 @@ void check_rates(const ExportOptions& o) {
 }
 
 // Every channel of <run_dir>/record: a foreign one is refused.
-recorder::Recording read_record(const fs::path& record_dir, const ExportOptions& o) {
+recording::Recording read_record(const fs::path& record_dir, const ExportOptions& o) {
     std::error_code ec;
     if (!fs::is_directory(record_dir, ec)) fail(o.run_dir.string(), "no record/ directory (record the run with --record)");
     try {
-        return recorder::read_recording(record_dir);
+        return recording::read_recording(record_dir);
     } catch (const std::runtime_error& e) {
         fail("export-log", e.what());
     }
@@ -76,7 +76,7 @@ recorder::Recording read_record(const fs::path& record_dir, const ExportOptions&
 
 // Writes <csv_dir>/<group>.csv from the group's record at its rate; returns its alignment values (imu, mag: those of
 // the first sample; other groups: none).
-std::vector<double> export_group(const LogGroup& g, RecordSamples& rec, const recorder::Recording& recording,
+std::vector<double> export_group(const LogGroup& g, RecordSamples& rec, const recording::Recording& recording,
                                  const ExportOptions& o) {
     if (rec.size() == 0) fail(recording.file.string() + ": " + g.topic, "no samples");
     // The grid step from the stamps of the first and last samples.
@@ -155,7 +155,7 @@ void export_reference(RecordSamples& rec, const ExportOptions& o) {
 void export_log(const ExportOptions& o) {
     check_rates(o);
     const fs::path record_dir = o.run_dir / "record";
-    recorder::Recording recording = read_record(record_dir, o);
+    recording::Recording recording = read_record(record_dir, o);
     fs::create_directories(o.csv_dir);
     std::vector<double> imu_align, mag_align;
     int written = 0;
@@ -182,4 +182,4 @@ void export_log(const ExportOptions& o) {
     }
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::io::flight_log

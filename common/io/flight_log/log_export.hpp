@@ -7,7 +7,7 @@
 #include <map>
 #include <string>
 
-namespace gdnav::app {
+namespace gdnav::io::flight_log {
 
 struct ExportOptions {
     std::filesystem::path run_dir;
@@ -18,4 +18,4 @@ struct ExportOptions {
 // Throws config::ConfigError on bad options or unreadable records.
 void export_log(const ExportOptions& o);
 
-}  // namespace gdnav::app
+}  // namespace gdnav::io::flight_log

@@ -15,7 +15,7 @@
 #include "framework/topic_types.hpp"
 #include "msgs/messages.hpp"
 
-namespace gdnav::app {
+namespace gdnav::io::flight_log {
 
 namespace fs = std::filesystem;
 
@@ -34,9 +34,9 @@ std::string fmt_t(double t) {
 }
 
 struct Sample {
-    const runtime::MessageOps* ops;
+    const msg::MessageOps* ops;
     void* p;
-    explicit Sample(const runtime::MessageOps& o) : ops(&o), p(o.create()) {}
+    explicit Sample(const msg::MessageOps& o) : ops(&o), p(o.create()) {}
     ~Sample() { ops->destroy(p); }
     Sample(const Sample&) = delete;
     Sample& operator=(const Sample&) = delete;
@@ -212,7 +212,7 @@ std::vector<Track> make_tracks(const std::vector<LoadedGroup>& loaded, const std
     const AlignmentLayout& al = alignment_layout();
     std::vector<Track> tracks;
     for (const auto& g : loaded) {
-        Track tr{&g, std::make_unique<Sample>(*runtime::find_topic(g.group->topic)), {}, {}};
+        Track tr{&g, std::make_unique<Sample>(*framework::find_topic(g.group->topic)), {}, {}};
         if (align && g.group->name == "imu")
             for (std::size_t c = 0; c < al.imu.size(); ++c) al.imu[c].ref(tr.s->p) = align->at(0, c);
         if (align && g.group->name == "mag")
@@ -227,17 +227,17 @@ std::vector<Track> make_tracks(const std::vector<LoadedGroup>& loaded, const std
 // One recording, the groups interleaved step by step (log-time order, as the recorder writes).
 void write_recording(const fs::path& record_dir, const std::vector<std::string>& topics, std::vector<Track>& tracks,
                      ReferenceTrack* reference, const ImportOptions& o, std::uint64_t steps) {
-    recorder::RecordingOptions ro;
+    recording::RecordingOptions ro;
     ro.t0_s = o.t0_s;
     ro.dt_s = o.dt_s;
     ro.run_metadata = {{"source", "gdnav import-log " + fs::absolute(o.csv_dir).string()},
                        {"t0_s", fmt_exact(o.t0_s)},
                        {"dt_s", fmt_exact(o.dt_s)},
                        {"steps", std::to_string(steps)},
-                       {"step_ns", std::to_string(recorder::step_ns(o.dt_s))},
+                       {"step_ns", std::to_string(recording::step_ns(o.dt_s))},
                        {"log_time_epoch", "t0_s: log_time = publish_time = step * step_ns ns; t_s = t0_s + step * dt_s"}};
     try {
-        recorder::RecordingWriter w(record_dir, topics, ro);
+        recording::RecordingWriter w(record_dir, topics, ro);
         for (std::uint64_t k = 0; k < steps; ++k) {
             const double tk = o.t0_s + static_cast<double>(k) * o.dt_s;
             for (std::size_t i = 0; i < tracks.size(); ++i) {
@@ -250,7 +250,7 @@ void write_recording(const fs::path& record_dir, const std::vector<std::string>&
             if (reference) {
                 msg::Truth truth;
                 reference->fill(k, truth);
-                runtime::message_ops<msg::Truth>().set_stamp(&truth, 0, k, tk);
+                msg::message_ops<msg::Truth>().set_stamp(&truth, 0, k, tk);
                 w.append(tracks.size(), k, &truth);
             }
         }
@@ -312,4 +312,4 @@ void import_log(const ImportOptions& o) {
     report_import(tracks, reference ? &*reference : nullptr, topics, align.has_value(), o, steps, record_dir);
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::io::flight_log

@@ -16,7 +16,7 @@
 #include <filesystem>
 #include <optional>
 
-namespace gdnav::app {
+namespace gdnav::io::flight_log {
 
 inline constexpr double kSnapS = 1e-6;         // a sample this close to a grid instant is taken as it is
 inline constexpr double kDefaultMaxGapS = 0.5;  // largest allowed gap of a continuous signal
@@ -34,4 +34,4 @@ struct ImportOptions {
 // Throws config::ConfigError (one line: file, line, column) on bad input.
 void import_log(const ImportOptions& o);
 
-}  // namespace gdnav::app
+}  // namespace gdnav::io::flight_log

@@ -2,7 +2,7 @@
 
 #include "msgs/messages.hpp"
 
-namespace gdnav::app {
+namespace gdnav::io::flight_log {
 
 #define GDNAV_LOG_SCALAR(M, f) LogField{#f, [](void* p) -> double& { return static_cast<M*>(p)->f(); }}
 #define GDNAV_LOG_ELEM(M, f, i) LogField{#f "_" #i, [](void* p) -> double& { return static_cast<M*>(p)->f()[i]; }}
@@ -47,4 +47,4 @@ const AlignmentLayout& alignment_layout() {
 #undef GDNAV_LOG_VEC3
 #undef GDNAV_LOG_TIME
 
-}  // namespace gdnav::app
+}  // namespace gdnav::io::flight_log

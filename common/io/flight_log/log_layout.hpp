@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace gdnav::app {
+namespace gdnav::io::flight_log {
 
 // One CSV column: its name and the double it maps to in a sample of the group's message type.
 struct LogField {
@@ -40,4 +40,4 @@ const AlignmentLayout& alignment_layout();
 inline constexpr const char* kAlignmentFile = "alignment.csv";
 inline constexpr const char* kTimeColumn = "t_s";
 
-}  // namespace gdnav::app
+}  // namespace gdnav::io::flight_log

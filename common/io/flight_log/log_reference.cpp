@@ -10,7 +10,7 @@
 #include "math/rotation.hpp"
 #include "msgs/messages.hpp"
 
-namespace gdnav::app {
+namespace gdnav::io::flight_log {
 
 namespace fs = std::filesystem;
 
@@ -186,4 +186,4 @@ void ReferenceTrack::fill(std::uint64_t k, msg::Truth& out) {
     out.dT_K(v[13]);
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::io::flight_log

@@ -24,7 +24,7 @@
 #include "io/flight_log/log_import.hpp"
 #include "msgs/messages.hpp"
 
-namespace gdnav::app {
+namespace gdnav::io::flight_log {
 
 inline constexpr const char* kReferenceFile = "reference.csv";  // what export-log writes from a recorded Truth
 
@@ -56,4 +56,4 @@ private:
     std::size_t i_{0};
 };
 
-}  // namespace gdnav::app
+}  // namespace gdnav::io::flight_log

@@ -2,7 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace gdnav::foxglove_ws {
+namespace gdnav::io::foxglove_ws {
 
 using nlohmann::json;
 
@@ -85,4 +85,4 @@ ClientRequest parse_client_request(std::string_view text) {
     return r;
 }
 
-}  // namespace gdnav::foxglove_ws
+}  // namespace gdnav::io::foxglove_ws

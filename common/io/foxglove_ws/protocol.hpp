@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-namespace gdnav::foxglove_ws {
+namespace gdnav::io::foxglove_ws {
 
 inline constexpr const char* kSubprotocol = "foxglove.websocket.v1";
 inline constexpr std::uint8_t kOpMessageData = 0x01;
@@ -47,4 +47,4 @@ struct ClientRequest {
 };
 ClientRequest parse_client_request(std::string_view text);
 
-}  // namespace gdnav::foxglove_ws
+}  // namespace gdnav::io::foxglove_ws

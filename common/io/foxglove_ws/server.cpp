@@ -9,7 +9,7 @@
 
 #include "io/foxglove_ws/ws_endpoint.hpp"
 
-namespace gdnav::foxglove_ws {
+namespace gdnav::io::foxglove_ws {
 
 void Frame::add(std::uint32_t channel_id, const std::uint8_t* data, std::size_t size) {
     messages.push_back({channel_id, bytes.size(), size});
@@ -213,4 +213,4 @@ ServerStats Server::stats() const {
     return s;
 }
 
-}  // namespace gdnav::foxglove_ws
+}  // namespace gdnav::io::foxglove_ws

@@ -32,7 +32,7 @@
 
 #include "io/foxglove_ws/protocol.hpp"
 
-namespace gdnav::foxglove_ws {
+namespace gdnav::io::foxglove_ws {
 
 class WsEndpoint;
 
@@ -134,4 +134,4 @@ private:
     std::vector<std::uint8_t> scratch_;        // one outgoing binary message
 };
 
-}  // namespace gdnav::foxglove_ws
+}  // namespace gdnav::io::foxglove_ws

@@ -12,7 +12,7 @@
 #include <websocketpp/config/asio_no_tls.hpp>
 #include <websocketpp/server.hpp>
 
-namespace gdnav::foxglove_ws {
+namespace gdnav::io::foxglove_ws {
 
 namespace {
 using WsServer = websocketpp::server<websocketpp::config::asio>;
@@ -198,4 +198,4 @@ void check_listen(const std::string& address, std::uint16_t port) {
     if (ec) throw std::runtime_error("cannot listen on " + where(address, port) + ": " + ec.message());
 }
 
-}  // namespace gdnav::foxglove_ws
+}  // namespace gdnav::io::foxglove_ws

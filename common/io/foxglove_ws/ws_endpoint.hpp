@@ -10,7 +10,7 @@
 #include <memory>
 #include <string>
 
-namespace gdnav::foxglove_ws {
+namespace gdnav::io::foxglove_ws {
 
 class WsEndpoint {
 public:
@@ -53,4 +53,4 @@ void check_address(const std::string& address);
 // now (a port in use, an address of no interface); binds and closes at once. check_address() first.
 void check_listen(const std::string& address, std::uint16_t port);
 
-}  // namespace gdnav::foxglove_ws
+}  // namespace gdnav::io::foxglove_ws

@@ -2,7 +2,7 @@
 
 #include <array>
 
-namespace gdnav::mcap {
+namespace gdnav::io::mcap {
 
 namespace {
 // Slicing-by-8 tables: t[0] is the classic byte table, t[k][i] the CRC of byte i followed by k zero bytes.
@@ -35,4 +35,4 @@ std::uint32_t crc32_update(std::uint32_t crc, const std::uint8_t* data, std::siz
     return c ^ 0xFFFFFFFFu;
 }
 
-}  // namespace gdnav::mcap
+}  // namespace gdnav::io::mcap

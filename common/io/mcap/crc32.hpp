@@ -4,9 +4,9 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace gdnav::mcap {
+namespace gdnav::io::mcap {
 
 // Continues a CRC: crc32_update(crc32_update(0, a), b) == crc32 of a followed by b. Start with 0.
 std::uint32_t crc32_update(std::uint32_t crc, const std::uint8_t* data, std::size_t n);
 
-}  // namespace gdnav::mcap
+}  // namespace gdnav::io::mcap

@@ -10,7 +10,7 @@
 #include <type_traits>
 #include <vector>
 
-namespace gdnav::mcap {
+namespace gdnav::io::mcap {
 
 inline constexpr std::uint8_t kMagic[8] = {0x89, 'M', 'C', 'A', 'P', 0x30, '\r', '\n'};
 
@@ -178,4 +178,4 @@ private:
     std::size_t pos_{0};
 };
 
-}  // namespace gdnav::mcap
+}  // namespace gdnav::io::mcap

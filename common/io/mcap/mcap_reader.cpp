@@ -9,7 +9,7 @@
 
 #include "io/mcap/crc32.hpp"
 
-namespace gdnav::mcap {
+namespace gdnav::io::mcap {
 
 namespace {
 
@@ -348,4 +348,4 @@ ReadResult read(const std::filesystem::path& file, const std::function<void(cons
     return scan_file(file, on_message, false);
 }
 
-}  // namespace gdnav::mcap
+}  // namespace gdnav::io::mcap

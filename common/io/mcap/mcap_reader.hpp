@@ -18,7 +18,7 @@
 
 #include "io/mcap/mcap_format.hpp"
 
-namespace gdnav::mcap {
+namespace gdnav::io::mcap {
 
 struct Schema {
     std::uint16_t id{0};
@@ -90,4 +90,4 @@ ReadResult read(const std::filesystem::path& file, const std::function<void(cons
 // (with `problem`) when the file has no valid footer, closing magic or summary, e.g. a recording cut short.
 ReadResult read_summary(const std::filesystem::path& file);
 
-}  // namespace gdnav::mcap
+}  // namespace gdnav::io::mcap

@@ -10,7 +10,7 @@
 #include "files/write_error.hpp"
 #include "io/mcap/crc32.hpp"
 
-namespace gdnav::mcap {
+namespace gdnav::io::mcap {
 
 Writer::Writer(const std::filesystem::path& file, WriterOptions options) : path_(file), opt_(std::move(options)) {
     if (opt_.compression != "zstd" && !opt_.compression.empty())
@@ -249,4 +249,4 @@ void Writer::close() {
     if (std::fclose(f) != 0) files::throw_write_error(path_, errno);
 }
 
-}  // namespace gdnav::mcap
+}  // namespace gdnav::io::mcap

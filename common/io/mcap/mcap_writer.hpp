@@ -19,7 +19,7 @@
 
 #include "io/mcap/mcap_format.hpp"
 
-namespace gdnav::mcap {
+namespace gdnav::io::mcap {
 
 struct WriterOptions {
     std::string profile;             // Header.profile ("" = none of the well-known profiles)
@@ -95,4 +95,4 @@ private:
     std::vector<std::uint8_t> scratch_;
 };
 
-}  // namespace gdnav::mcap
+}  // namespace gdnav::io::mcap

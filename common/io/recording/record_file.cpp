@@ -13,13 +13,13 @@
 #include "framework/topic_types.hpp"
 #include "io/viewer/viewer_channels.hpp"
 
-namespace gdnav::recorder {
+namespace gdnav::io::recording {
 
 namespace fs = std::filesystem;
 
 namespace {
 struct SampleDeleter {
-    const runtime::MessageOps* ops;
+    const msg::MessageOps* ops;
     void operator()(void* p) const { ops->destroy(p); }
 };
 }  // namespace
@@ -50,15 +50,15 @@ fs::path recording_file(const fs::path& dir) { return dir / kRecordingFile; }
 std::uint64_t step_ns(double dt_s) { return static_cast<std::uint64_t>(std::llround(dt_s * 1e9)); }
 
 std::string resolve_topic(const std::string& name) {
-    if (runtime::find_topic(name)) return name;
+    if (framework::find_topic(name)) return name;
     const std::string full = "gdnav/" + name;
-    if (name.find('/') == std::string::npos && runtime::find_topic(full)) return full;
+    if (name.find('/') == std::string::npos && framework::find_topic(full)) return full;
     return {};
 }
 
 std::string known_topics_list() {
     std::string known;
-    for (const auto& k : runtime::known_topics()) known += (known.empty() ? "" : ", ") + k;
+    for (const auto& k : framework::known_topics()) known += (known.empty() ? "" : ", ") + k;
     return known;
 }
 
@@ -73,7 +73,7 @@ bool is_derived(const mcap::Channel& c, const mcap::Schema* schema) {
 // Checks a channel against gdnav's topics; the error names the channel.
 void check_channel(const fs::path& file, const mcap::Channel& c, const mcap::Schema* schema) {
     const std::string where = file.string() + ": channel '" + c.topic + "' (id " + std::to_string(c.id) + ")";
-    const runtime::MessageOps* ops = runtime::find_topic(c.topic);
+    const msg::MessageOps* ops = framework::find_topic(c.topic);
     if (!ops)
         throw std::runtime_error(where + " is not a gdnav topic (not a gdnav recording? known topics: " +
                                  known_topics_list() + ")");
@@ -137,7 +137,7 @@ private:
             TopicRecord& tr = rec_.topics[c.topic];
             tr.topic = c.topic;
             tr.file = rec_.file;
-            tr.ops = runtime::find_topic(c.topic);
+            tr.ops = framework::find_topic(c.topic);
             t.record = &tr;
             t.decoder = std::make_unique<SampleDecoder>(*tr.ops);
             t.sample = std::unique_ptr<void, SampleDeleter>(tr.ops->create(), SampleDeleter{tr.ops});
@@ -202,7 +202,7 @@ void add_empty_wanted(Recording& rec, const std::vector<std::string>& wanted) {
         TopicRecord& tr = rec.topics[topic];
         tr.topic = topic;
         tr.file = rec.file;
-        tr.ops = runtime::find_topic(topic);
+        tr.ops = framework::find_topic(topic);
     }
 }
 
@@ -257,7 +257,7 @@ std::vector<std::string> recorded_topics(const fs::path& dir) {
 }
 
 TopicRecord read_topic_record(const fs::path& dir, const std::string& topic) {
-    if (!runtime::find_topic(topic))
+    if (!framework::find_topic(topic))
         throw std::runtime_error("unknown topic '" + topic + "' (known: " + known_topics_list() + ")");
     Recording rec = read_recording(dir, {topic});
     return std::move(rec.topics.at(topic));
@@ -280,4 +280,4 @@ DigestFile read_digest_file(const fs::path& dir) {
     return d;
 }
 
-}  // namespace gdnav::recorder
+}  // namespace gdnav::io::recording

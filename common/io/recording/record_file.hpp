@@ -22,7 +22,7 @@
 #include "io/mcap/mcap_format.hpp"
 #include "msgs/message_ops.hpp"
 
-namespace gdnav::recorder {
+namespace gdnav::io::recording {
 
 inline constexpr const char* kRecordingFile = "run.mcap";
 inline constexpr const char* kMessageEncoding = mcap::kCdr;
@@ -47,15 +47,15 @@ std::string resolve_topic(const std::string& name);
 // The known data topics, comma separated (for error messages).
 std::string known_topics_list();
 
-// Decodes CDR payloads of one topic's type (the type's message operations: runtime::MessageOps::deserialize).
+// Decodes CDR payloads of one topic's type (the type's message operations: msg::MessageOps::deserialize).
 class SampleDecoder {
 public:
-    explicit SampleDecoder(const runtime::MessageOps& ops) : ops_(&ops) {}
+    explicit SampleDecoder(const msg::MessageOps& ops) : ops_(&ops) {}
     // Deserialises n bytes into `sample` (an object of the topic's type); false when the bytes are not a sample.
     bool decode(const std::uint8_t* bytes, std::uint32_t n, void* sample) { return ops_->deserialize(bytes, n, sample); }
 
 private:
-    const runtime::MessageOps* ops_;
+    const msg::MessageOps* ops_;
 };
 
 struct RecordEntry {
@@ -68,7 +68,7 @@ struct RecordEntry {
 struct TopicRecord {
     std::string topic;
     std::filesystem::path file;        // the MCAP file
-    const runtime::MessageOps* ops{nullptr};
+    const msg::MessageOps* ops{nullptr};
     std::vector<std::uint8_t> bytes;   // the CDR payloads, one after the other
     std::vector<RecordEntry> entries;  // strictly increasing steps
     std::uint64_t digest{kFnvBasis};   // as digest.yaml
@@ -114,4 +114,4 @@ struct DigestFile {
 // Throws std::runtime_error when digest.yaml exists but is malformed.
 DigestFile read_digest_file(const std::filesystem::path& dir);
 
-}  // namespace gdnav::recorder
+}  // namespace gdnav::io::recording

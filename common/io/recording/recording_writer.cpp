@@ -5,7 +5,7 @@
 
 #include "framework/topic_types.hpp"
 
-namespace gdnav::recorder {
+namespace gdnav::io::recording {
 
 namespace fs = std::filesystem;
 
@@ -23,11 +23,11 @@ RecordingWriter::RecordingWriter(const fs::path& dir, const std::vector<std::str
     if (!o.run_yaml.empty()) mcap_->write_attachment(kRunYamlAttachment, "application/yaml", 0, 0, o.run_yaml);
     std::map<std::string, std::uint16_t> schema_ids;  // type name -> schema
     for (const auto& topic : topics) {
-        const runtime::MessageOps* ops = runtime::find_topic(topic);
+        const msg::MessageOps* ops = framework::find_topic(topic);
         if (!ops) throw std::runtime_error("unknown topic '" + topic + "' (known: " + known_topics_list() + ")");
         auto it = schema_ids.find(ops->type_name);
         if (it == schema_ids.end()) {
-            const std::string_view idl = runtime::topic_schema_idl(topic);
+            const std::string_view idl = framework::topic_schema_idl(topic);
             it = schema_ids.emplace(ops->type_name, mcap_->add_schema(ops->type_name, kSchemaEncoding, std::string(idl)))
                      .first;
         }
@@ -161,4 +161,4 @@ void RecordingWriter::close(bool complete, const std::map<std::string, std::uint
     if (!d) throw std::runtime_error(f.string() + ": write error");
 }
 
-}  // namespace gdnav::recorder
+}  // namespace gdnav::io::recording

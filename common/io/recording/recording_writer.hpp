@@ -21,7 +21,7 @@
 #include "io/recording/record_file.hpp"
 #include "io/viewer/viewer_channels.hpp"
 
-namespace gdnav::recorder {
+namespace gdnav::io::recording {
 
 struct RecordingOptions {
     double t0_s{0.0};  // simulated time of step 0 (the log-time epoch)
@@ -55,7 +55,7 @@ private:
     static constexpr std::size_t kMaxQueued = 8;
     struct Track {
         std::string topic;
-        const runtime::MessageOps* ops;  // nullptr: a derived channel
+        const msg::MessageOps* ops;  // nullptr: a derived channel
         std::uint16_t channel;
         std::uint64_t appended{0}, last_appended{0};     // the caller's side
         std::uint64_t samples{0}, last_step{0}, digest{kFnvBasis};  // the writer thread's side
@@ -91,4 +91,4 @@ private:
     bool closed_{false};
 };
 
-}  // namespace gdnav::recorder
+}  // namespace gdnav::io::recording

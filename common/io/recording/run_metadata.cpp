@@ -6,7 +6,7 @@
 
 #include "io/recording/record_file.hpp"
 
-namespace gdnav::recorder {
+namespace gdnav::io::recording {
 
 namespace {
 std::string exact(double v) {
@@ -16,7 +16,7 @@ std::string exact(double v) {
 }
 }  // namespace
 
-std::map<std::string, std::string> run_metadata(const runtime::RunInfo& run, const std::string& run_yaml) {
+std::map<std::string, std::string> run_metadata(const framework::RunInfo& run, const std::string& run_yaml) {
     std::map<std::string, std::string> m{
         {"gdnav_version", GDNAV_VERSION},
         {"seed", std::to_string(run.seed)},
@@ -54,4 +54,4 @@ std::map<std::string, std::string> run_metadata(const runtime::RunInfo& run, con
     return m;
 }
 
-}  // namespace gdnav::recorder
+}  // namespace gdnav::io::recording

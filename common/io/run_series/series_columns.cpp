@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-namespace gdnav::nav_recorder {
+namespace gdnav::io::run_series {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -24,8 +24,8 @@ metrics::NavState nav_state(const Air& a, const Att& q, const Pos& p) {
     s.lat_rad = p.lat_rad();
     s.lon_rad = p.lon_rad();
     s.h_m = p.h_m();
-    s.v_n_mps = runtime::to_vec3(p.v_n_mps());
-    s.q_nb = runtime::to_quat(q.q_nb());
+    s.v_n_mps = framework::to_vec3(p.v_n_mps());
+    s.q_nb = framework::to_quat(q.q_nb());
     s.tas_mps = a.tas_mps();
     s.aoa_rad = a.aoa_rad();
     s.aos_rad = a.aos_rad();
@@ -95,7 +95,7 @@ void fill_estimate_row(double* r, double t_s, const msg::AirDataEstimate* a, con
         offsets(p->lat_rad(), p->lon_rad(), h_true_m, o, r[21], r[22]);
     }
     if (q) {
-        const math::Euler e = math::euler_from_quat(runtime::to_quat(q->q_nb()));
+        const math::Euler e = math::euler_from_quat(framework::to_quat(q->q_nb()));
         r[7] = e.yaw_rad;
         r[8] = e.pitch_rad;
         r[9] = e.bank_rad;
@@ -127,4 +127,4 @@ void fill_gnss_row(double* r, double t_s, const msg::GnssSample& g) {
     std::copy(row, row + kGnssColumns, r);
 }
 
-}  // namespace gdnav::nav_recorder
+}  // namespace gdnav::io::run_series

@@ -19,7 +19,7 @@
 #include "metrics/nav_errors.hpp"
 #include "msgs/messages.hpp"
 
-namespace gdnav::nav_recorder {
+namespace gdnav::io::run_series {
 
 inline constexpr std::size_t kTruthColumns = 23;
 inline constexpr std::size_t kEstimateColumns = 23;
@@ -49,4 +49,4 @@ void fill_estimate_row(double* row, double t_s, const msg::AirDataEstimate* a, c
 void fill_error_row(double* row, double t_s, const metrics::NavErrors* e);
 void fill_gnss_row(double* row, double t_s, const msg::GnssSample& g);
 
-}  // namespace gdnav::nav_recorder
+}  // namespace gdnav::io::run_series

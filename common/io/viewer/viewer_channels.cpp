@@ -5,14 +5,10 @@
 #include "msgs/messages.hpp"
 #include "framework/msg_eigen.hpp"
 #include "io/viewer/viewer_math.hpp"
+#include "msgs/idl_text.hpp"
 #include "msgs/viewer_messages.hpp"
 
-namespace gdnav::idl_text {
-std::string_view foxglove_schemas();  // generated from idl/foxglove/foxglove_schemas.idl (cmake/GdnavIdl.cmake)
-std::string_view gdnav_viewer();      // generated from idl/gdnav_viewer.idl
-}  // namespace gdnav::idl_text
-
-namespace gdnav::viewer {
+namespace gdnav::io::viewer {
 
 namespace {
 
@@ -25,7 +21,7 @@ enum Index : std::size_t { kTrueFix, kEstFix, kTrueTf, kEstTf, kErrors, kTruePos
 template <class T>
 void encode_message(std::size_t channel, const T& message, std::vector<ViewerMessage>& out) {
     out.emplace_back(channel, std::vector<std::uint8_t>{});
-    runtime::message_ops<T>().serialize(&message, out.back().second);
+    msg::message_ops<T>().serialize(&message, out.back().second);
 }
 
 foxglove::Time stamp_of(std::uint64_t log_time_ns) {
@@ -84,8 +80,8 @@ foxglove::PoseInFrame pose_in_frame(const foxglove::Time& stamp, const math::Vec
 
 const std::vector<ViewerChannel>& viewer_channels() {
     static const std::vector<ViewerChannel> channels = [] {
-        const std::string fox(idl_text::foxglove_schemas());
-        const std::string own(idl_text::gdnav_viewer());
+        const std::string fox(msg::idl_text::foxglove_schemas());
+        const std::string own(msg::idl_text::gdnav_viewer());
         std::vector<ViewerChannel> c(kCount);
         c[kTrueFix] = {"/viewer/true/fix", "foxglove::LocationFix", kOmgIdl, fox, kCdr};
         c[kEstFix] = {"/viewer/est/fix", "foxglove::LocationFix", kOmgIdl, fox, kCdr};
@@ -114,25 +110,26 @@ bool is_viewer_channel(const std::string& topic, const std::string& schema_name,
     return false;
 }
 
-ViewerChannels::ViewerChannels(runtime::Component& owner, ViewerOptions options) : options_(options) {
+ViewerChannels::ViewerChannels(framework::Component& owner, ViewerOptions options) : options_(options) {
     if (options_.decimation == 0) options_.decimation = 1;
-    truth_ = &input(owner, topics::kTruth, runtime::message_ops<msg::Truth>());
-    att_ = &input(owner, topics::kAttitude, runtime::message_ops<msg::AttitudeEstimate>());
-    pos_ = &input(owner, topics::kPosition, runtime::message_ops<msg::PositionEstimate>());
-    air_ = &input(owner, topics::kAirData, runtime::message_ops<msg::AirDataEstimate>());
+    truth_ = &input(owner, topics::kTruth, msg::message_ops<msg::Truth>());
+    att_ = &input(owner, topics::kAttitude, msg::message_ops<msg::AttitudeEstimate>());
+    pos_ = &input(owner, topics::kPosition, msg::message_ops<msg::PositionEstimate>());
+    air_ = &input(owner, topics::kAirData, msg::message_ops<msg::AirDataEstimate>());
 }
 
 ViewerChannels::~ViewerChannels() = default;
 
-const runtime::InputBase& ViewerChannels::input(runtime::Component& owner, const std::string& topic,
-                                                const runtime::MessageOps& ops) {
-    for (const runtime::InputBase* in : owner.inputs())
-        if (in->topic() == topic && in->lag() == runtime::Lag::Same) return *in;
-    owned_.push_back(std::make_unique<runtime::InputBase>(owner, topic, runtime::Lag::Same, ops));
+const framework::InputBase& ViewerChannels::input(framework::Component& owner, const std::string& topic,
+                                                const msg::MessageOps& ops) {
+    for (const framework::InputBase* in : owner.inputs())
+        if (in->topic() == topic && in->lag() == framework::Lag::Same) return *in;
+    owned_.push_back(std::make_unique<framework::InputBase>(owner, topic, framework::Lag::Same, ops));
     return *owned_.back();
 }
 
-void ViewerChannels::encode(const runtime::StepContext& ctx, std::uint64_t log_time_ns, std::vector<ViewerMessage>& out) {
+void ViewerChannels::encode(const framework::StepContext& ctx, std::uint64_t log_time_ns,
+                            std::vector<ViewerMessage>& out) {
     if (!truth_->available()) return;
     const auto& t = *static_cast<const msg::Truth*>(truth_->data_ptr());
     if (!have_origin_) {  // as nav_recorder: the first true position, its radii for the horizontal errors
@@ -144,7 +141,7 @@ void ViewerChannels::encode(const runtime::StepContext& ctx, std::uint64_t log_t
     const foxglove::Time stamp = stamp_of(log_time_ns);
     const earth::Geodetic true_pos{t.lon_rad(), t.lat_rad(), t.h_m()};
     const math::Vec3 true_enu = enu_offset_m(origin_, true_pos);
-    const math::Quat true_q = runtime::to_quat(t.q_nb());
+    const math::Quat true_q = framework::to_quat(t.q_nb());
     encode_message(kTrueFix, location_fix(stamp, "body_true", t.lat_rad(), t.lon_rad(), t.h_m()), out);
     encode_message(kTrueTf, frame_transform(stamp, "body_true", true_enu, true_q), out);
     encode_message(kTruePose, pose_in_frame(stamp, true_enu, true_q), out);
@@ -155,12 +152,12 @@ void ViewerChannels::encode(const runtime::StepContext& ctx, std::uint64_t log_t
     const earth::Geodetic est_pos{p.lon_rad(), p.lat_rad(), p.h_m()};
     encode_message(kEstFix, location_fix(stamp, "body_est", p.lat_rad(), p.lon_rad(), p.h_m()), out);
     const math::Vec3 est_enu = enu_offset_m(origin_, est_pos);
-    const math::Quat est_q = runtime::to_quat(q.q_nb());
+    const math::Quat est_q = framework::to_quat(q.q_nb());
     encode_message(kEstTf, frame_transform(stamp, "body_est", est_enu, est_q), out);
     encode_message(kEstPose, pose_in_frame(stamp, est_enu, est_q), out);
     const NavErrorValues v =
-        nav_error_values(nav_recorder::estimate_state(a, q, p), nav_recorder::truth_state(t), radii0_);
-    NavErrors e;
+        nav_error_values(run_series::estimate_state(a, q, p), run_series::truth_state(t), radii0_);
+    gdnav::viewer::NavErrors e;
     e.t_s(ctx.t_s);
     e.att_err_deg(v.att_err_deg);
     e.yaw_err_deg(v.yaw_err_deg);
@@ -178,4 +175,4 @@ void ViewerChannels::encode(const runtime::StepContext& ctx, std::uint64_t log_t
     encode_message(kErrors, e, out);
 }
 
-}  // namespace gdnav::viewer
+}  // namespace gdnav::io::viewer

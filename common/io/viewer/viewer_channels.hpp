@@ -31,7 +31,7 @@
 #include "earth/wgs84.hpp"
 #include "framework/component.hpp"
 
-namespace gdnav::viewer {
+namespace gdnav::io::viewer {
 
 struct ViewerChannel {
     std::string topic;
@@ -61,7 +61,7 @@ using ViewerMessage = std::pair<std::size_t, std::vector<std::uint8_t>>;
 class ViewerChannels {
 public:
     // Finds or declares the inputs on `owner` (call it from the owner's configure(), after the owner's own inputs).
-    ViewerChannels(runtime::Component& owner, ViewerOptions options);
+    ViewerChannels(framework::Component& owner, ViewerOptions options);
     ~ViewerChannels();
     ViewerChannels(const ViewerChannels&) = delete;
     ViewerChannels& operator=(const ViewerChannels&) = delete;
@@ -72,20 +72,21 @@ public:
     [[nodiscard]] bool has_origin() const { return have_origin_; }
     // Appends this step's messages to `out` (nothing at steps between decimated ones). `log_time_ns`: the step's log
     // time, written as every message's foxglove::Time timestamp.
-    void encode(const runtime::StepContext& ctx, std::uint64_t log_time_ns, std::vector<ViewerMessage>& out);
+    void encode(const framework::StepContext& ctx, std::uint64_t log_time_ns, std::vector<ViewerMessage>& out);
 
 private:
-    const runtime::InputBase& input(runtime::Component& owner, const std::string& topic, const runtime::MessageOps& ops);
+    const framework::InputBase& input(framework::Component& owner, const std::string& topic,
+                                      const msg::MessageOps& ops);
 
     ViewerOptions options_;
-    std::vector<std::unique_ptr<runtime::InputBase>> owned_;  // inputs the owner did not have
-    const runtime::InputBase* truth_{nullptr};
-    const runtime::InputBase* att_{nullptr};
-    const runtime::InputBase* pos_{nullptr};
-    const runtime::InputBase* air_{nullptr};
+    std::vector<std::unique_ptr<framework::InputBase>> owned_;  // inputs the owner did not have
+    const framework::InputBase* truth_{nullptr};
+    const framework::InputBase* att_{nullptr};
+    const framework::InputBase* pos_{nullptr};
+    const framework::InputBase* air_{nullptr};
     bool have_origin_{false};
     earth::Geodetic origin_;
     earth::Radii radii0_;
 };
 
-}  // namespace gdnav::viewer
+}  // namespace gdnav::io::viewer

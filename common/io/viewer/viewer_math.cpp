@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace gdnav::viewer {
+namespace gdnav::io::viewer {
 
 math::Quat quat_enu_flu(const math::Quat& q_nb) {
     const double h = std::sqrt(0.5);
@@ -42,4 +42,4 @@ NavErrorValues nav_error_values(const metrics::NavState& est, const metrics::Nav
     return v;
 }
 
-}  // namespace gdnav::viewer
+}  // namespace gdnav::io::viewer

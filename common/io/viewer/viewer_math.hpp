@@ -17,7 +17,7 @@
 #include "math/rotation.hpp"
 #include "metrics/nav_errors.hpp"
 
-namespace gdnav::viewer {
+namespace gdnav::io::viewer {
 
 // Attitude body (x forward, y left, z up) -> ENU from gdnav's q_nb (body x forward, y right, z down -> NED).
 math::Quat quat_enu_flu(const math::Quat& q_nb);
@@ -51,4 +51,4 @@ struct NavErrorValues {
 NavErrorValues nav_error_values(const metrics::NavState& est, const metrics::NavState& truth,
                                 const earth::Radii& radii0);
 
-}  // namespace gdnav::viewer
+}  // namespace gdnav::io::viewer

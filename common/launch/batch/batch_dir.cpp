@@ -13,7 +13,7 @@
 #include "config/config.hpp"
 #include "files/write_error.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch::batch {
 
 namespace fs = std::filesystem;
 
@@ -95,4 +95,4 @@ void write_shard_record(const fs::path& dir, const Shard& s, unsigned jobs, std:
                       o.str());
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::batch

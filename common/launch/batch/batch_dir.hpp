@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace gdnav::app {
+namespace gdnav::launch::batch {
 
 struct Shard {
     std::uint64_t index{1};  // I, 1-based
@@ -49,4 +49,4 @@ BatchDirInfo read_batch_dir(const std::filesystem::path& dir);
 // Records that shard `s` ran into `dir` (DIR/shards/shard_I_of_N.yaml).
 void write_shard_record(const std::filesystem::path& dir, const Shard& s, unsigned jobs, std::size_t runs);
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::batch

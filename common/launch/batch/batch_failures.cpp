@@ -9,7 +9,7 @@
 
 #include "launch/batch/batch_dir.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch::batch {
 
 namespace fs = std::filesystem;
 
@@ -148,4 +148,4 @@ std::string failures_markdown(const std::vector<RunFailure>& failures, const std
     return md.str();
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::batch

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-namespace gdnav::app {
+namespace gdnav::launch::batch {
 
 struct RunFailure {
     std::uint64_t run{0};
@@ -38,4 +38,4 @@ void write_failures_summary(const std::filesystem::path& batch_dir);
 // The failed runs as Markdown: one heading per run with its cause and its last log lines.
 std::string failures_markdown(const std::vector<RunFailure>& failures, const std::string& where);
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::batch

@@ -9,7 +9,7 @@
 #include "launch/batch/run_files.hpp"
 #include "config/config.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch::batch {
 
 namespace fs = std::filesystem;
 
@@ -131,4 +131,4 @@ std::string index_ranges(const std::vector<std::uint64_t>& v) {
     return out;
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::batch

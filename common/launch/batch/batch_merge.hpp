@@ -7,7 +7,7 @@
 
 #include "metrics/run_record.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch::batch {
 
 // The directories grouped into report blocks, each a list of directories of one batch:
 //   * all directories of one batch (same scenario.yaml, i.e. scenario, overrides, seed, steps; same run range):
@@ -28,4 +28,4 @@ MergedRuns merge_complete_runs(const std::vector<std::filesystem::path>& dirs);
 // "3, 6-8, 12"
 std::string index_ranges(const std::vector<std::uint64_t>& sorted);
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::batch

@@ -12,10 +12,10 @@
 #include "launch/member_process.hpp"
 #include "metrics/run_record.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch::batch {
 
 namespace fs = std::filesystem;
-using namespace gdnav::runtime;
+using namespace gdnav::launch;
 
 namespace {
 
@@ -95,7 +95,7 @@ int first_domain(const BatchSpec& spec) {
 // so that `gdnav compare` can tell by its SHA-256 whether two batches flew the same missions. Nothing when the
 // scenario has no generator. Written beside the run's outputs: no recorded topic or metric changes.
 void write_drawn_scenario(const PreparedBatch& p, std::uint64_t run, const fs::path& run_dir) {
-    const YAML::Node drawn = drawn_scenario(p.doc, p.seed, run, (p.dir / "scenario.yaml").string());
+    const YAML::Node drawn = framework::drawn_scenario(p.doc, p.seed, run, (p.dir / "scenario.yaml").string());
     if (!drawn || drawn.IsNull()) return;
     YAML::Emitter em;
     em.SetDoublePrecision(17);
@@ -105,16 +105,16 @@ void write_drawn_scenario(const PreparedBatch& p, std::uint64_t run, const fs::p
                       "gdnav montecarlo\n" + std::string(em.c_str()) + "\n");
 }
 
-PreparedBatch prepare_batch(const BatchSpec& spec, const ComponentRegistry& reg, const Shard& shard) {
+PreparedBatch prepare_batch(const BatchSpec& spec, const framework::ComponentRegistry& reg, const Shard& shard) {
     const std::string text = batch_scenario_text(spec);
     // Validate the whole configuration once (run `first`) before starting anything.
-    RunOverrides ro;
+    framework::RunOverrides ro;
     ro.run_index = spec.first;
-    const RunConfig rc0 = RunConfig::parse(text, spec.file.string(), ro);
+    const framework::RunConfig rc0 = framework::RunConfig::parse(text, spec.file.string(), ro);
     (void)rc0.build(reg);
     check_started_members(rc0, spec.layout);
     {  // every member's command is found (placeholders of a run in the current directory)
-        RunConfig probe = rc0;
+        framework::RunConfig probe = rc0;
         probe.out_dir = ".";
         (void)resolve_member_processes(probe);
     }
@@ -156,4 +156,4 @@ std::vector<std::uint64_t> runs_to_do(const PreparedBatch& p, std::size_t& skipp
     return todo;
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::batch

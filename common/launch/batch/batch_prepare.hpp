@@ -12,7 +12,7 @@
 #include "launch/batch/batch_dir.hpp"
 #include "launch/batch/batch_runner.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch::batch {
 
 // The batch as validated and recorded in its directory.
 struct PreparedBatch {
@@ -25,7 +25,7 @@ struct PreparedBatch {
 };
 
 // Validates the batch (every component built once), writes or checks its folder and records.
-PreparedBatch prepare_batch(const BatchSpec& spec, const runtime::ComponentRegistry& reg, const Shard& shard);
+PreparedBatch prepare_batch(const BatchSpec& spec, const framework::ComponentRegistry& reg, const Shard& shard);
 
 // RUN_DIR/drawn_scenario.yaml: what the scenario's generator draws for run RUN.
 void write_drawn_scenario(const PreparedBatch& p, std::uint64_t run, const std::filesystem::path& run_dir);
@@ -33,4 +33,4 @@ void write_drawn_scenario(const PreparedBatch& p, std::uint64_t run, const std::
 // Runs of the shard still to do; SKIPPED: the complete ones.
 std::vector<std::uint64_t> runs_to_do(const PreparedBatch& p, std::size_t& skipped);
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::batch

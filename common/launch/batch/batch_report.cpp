@@ -16,7 +16,7 @@
 #include "metrics/report_tables.hpp"
 #include "framework/run_config.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch::batch {
 
 namespace fs = std::filesystem;
 
@@ -102,8 +102,9 @@ int run_report_tool(const std::string& name, std::vector<std::string> args, bool
     const char* py_env = std::getenv("GDNAV_PYTHON");
     const char* script_env = std::getenv("GDNAV_REPORT_SCRIPT");
     const std::string py = py_env && *py_env ? py_env : "/usr/bin/python3";
-    const fs::path report = script_env && *script_env ? fs::path(script_env)
-                                                      : runtime::config_dir().parent_path() / "tools/report/report.py";
+    const fs::path report = script_env && *script_env
+                                ? fs::path(script_env)
+                                : framework::config_dir().parent_path() / "tools/report/report.py";
     const fs::path script = name == "report.py" ? report : report.parent_path() / name;
     if (!fs::exists(script)) {
         spdlog::error("{}: {} not found (set GDNAV_REPORT_SCRIPT)", name, script.string());
@@ -192,4 +193,4 @@ int write_batch_report(const std::vector<fs::path>& dirs, const ReportOptions& o
     return code;
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::batch

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace gdnav::app {
+namespace gdnav::launch::batch {
 
 struct ReportOptions {
     bool figures{true};
@@ -25,4 +25,4 @@ int write_batch_report(const std::vector<std::filesystem::path>& batch_dirs, con
 // other tools beside it. Returns the tool's exit code (1 when it cannot start), logged when non-zero and log_failure.
 int run_report_tool(const std::string& name, std::vector<std::string> args, bool log_failure = true);
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::batch

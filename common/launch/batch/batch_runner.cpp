@@ -29,10 +29,10 @@
 #include "framework/scenario_generator.hpp"
 #include "metrics/run_record.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch::batch {
 
 namespace fs = std::filesystem;
-using namespace gdnav::runtime;
+using namespace gdnav::launch;
 
 namespace {
 
@@ -91,15 +91,15 @@ public:
         : spec_(spec), p_(p), todo_(std::move(todo)), skipped_(skipped) {}
 
     void run() {
-        install_stop_signal_handlers();
+        dds::install_stop_signal_handlers();
         exe_ = fs::read_symlink("/proc/self/exe");
         tty_ = isatty(STDERR_FILENO) != 0;
-        t0_ = steady_now_s();
+        t0_ = framework::steady_now_s();
         while ((next_ < todo_.size() && !interrupted_ && !write_failed_) || !workers_.empty()) {
-            if (stop_requested() && !interrupted_) interrupt();
+            if (dds::stop_requested() && !interrupted_) interrupt();
             start_workers();
             if (reap_one()) continue;
-            if (interrupted_ && steady_now_s() > kill_at_s_)
+            if (interrupted_ && framework::steady_now_s() > kill_at_s_)
                 for (const auto& w : workers_) kill(w.pid, SIGKILL);  // the launchers had 10 s to stop their processes
             print_progress(false);
             std::this_thread::sleep_for(std::chrono::milliseconds(50));
@@ -120,16 +120,16 @@ public:
             spdlog::warn(
                 "montecarlo: interrupted after {} new runs; run the same command again to complete the missing ones",
                 done_now_);
-            return kExitInterrupted;
+            return framework::kExitInterrupted;
         }
         if (write_failed_) {
             spdlog::error("montecarlo: stopped: a run could not write its files; {} complete runs ({} new), {} not "
                           "started; free space and run the same command again to complete the batch",
                           skipped_ + done_now_, done_now_, todo_.size() - next_);
-            return kExitWriteFailed;
+            return framework::kExitWriteFailed;
         }
         spdlog::info("montecarlo:{} {} complete runs ({} new, {} skipped), {} failed, {:.1f} s", which,
-                     skipped_ + done_now_, done_now_, skipped_, failures_.size(), steady_now_s() - t0_);
+                     skipped_ + done_now_, done_now_, skipped_, failures_.size(), framework::steady_now_s() - t0_);
         return failures_.empty() ? 0 : 1;
     }
 
@@ -139,7 +139,7 @@ private:
         if (tty_) std::fprintf(stderr, "\n");
         spdlog::warn("montecarlo: interrupted; stopping {} running runs", workers_.size());
         for (const auto& w : workers_) kill(w.pid, SIGTERM);
-        kill_at_s_ = steady_now_s() + 10.0;
+        kill_at_s_ = framework::steady_now_s() + 10.0;
     }
 
     // The run's failure record (failure.yaml); on a full disk, where even that cannot be written, the cause as far as
@@ -154,7 +154,7 @@ private:
             f.log_tail = last_lines(w.dir / "log.txt", 1);
             f.cause = f.log_tail.empty() ? "(no output in log.txt)" : f.log_tail.back();
         }
-        if (code == kExitWriteFailed && f.cause.find("cannot write") == std::string::npos)
+        if (code == framework::kExitWriteFailed && f.cause.find("cannot write") == std::string::npos)
             f.cause = "an output file could not be written (exit code 6; " + f.cause + ")";
         return f;
     }
@@ -179,7 +179,7 @@ private:
             if (p_.first_domain >= 0)
                 args.insert(args.end(), {"--domain", std::to_string(p_.first_domain + static_cast<int>(w.slot))});
             w.pid = spawn_logged(exe_, args, w.dir / "log.txt");
-            w.started_s = steady_now_s();
+            w.started_s = framework::steady_now_s();
             workers_.push_back(w);
         }
     }
@@ -205,14 +205,14 @@ private:
                 } catch (const files::WriteError& e) {
                     spdlog::error("montecarlo: run {}: {}", it->run, e.what());
                     ok = false;
-                    code = kExitWriteFailed;
+                    code = framework::kExitWriteFailed;
                 }
             }
             if (ok) {
                 ++done_now_;
             } else if (!interrupted_) {
                 failures_.push_back(failure_of(*it, code == 0 ? 1 : code));
-                if (code == kExitWriteFailed && !write_failed_) {
+                if (code == framework::kExitWriteFailed && !write_failed_) {
                     // Every further run would meet the same full disk: none is started; the batch resumes later.
                     write_failed_ = true;
                     spdlog::error("montecarlo: run {} could not write its files ({}); no new run is started. Free "
@@ -227,7 +227,7 @@ private:
     }
 
     void print_progress(bool final_line) {
-        const double now = steady_now_s();
+        const double now = framework::steady_now_s();
         if (!final_line && now - last_print_ < (tty_ ? 0.5 : 15.0)) return;
         last_print_ = now;
         double partial = 0.0;
@@ -264,7 +264,7 @@ private:
 
 }  // namespace
 
-int run_batch_shard(const BatchSpec& spec, const ComponentRegistry& reg, const Shard& shard) {
+int run_batch_shard(const BatchSpec& spec, const framework::ComponentRegistry& reg, const Shard& shard) {
     const PreparedBatch p = prepare_batch(spec, reg, shard);
     std::size_t skipped = 0;
     std::vector<std::uint64_t> todo = runs_to_do(p, skipped);
@@ -282,4 +282,4 @@ int run_batch_shard(const BatchSpec& spec, const ComponentRegistry& reg, const S
     return r.finish(which);
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::batch

@@ -14,7 +14,7 @@
 #include "framework/registry.hpp"
 #include "launch/batch/batch_dir.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch::batch {
 
 struct BatchSpec {
     std::string scenario;         // as given on the command line (recorded in batch.yaml)
@@ -36,6 +36,6 @@ struct BatchSpec {
 // Runs shard `s` of the batch (Shard{} = every run) into spec.out and returns 0 when each of its runs is complete,
 // 1 when some failed, 130 when interrupted; configuration errors throw config::ConfigError before anything runs.
 // No report.
-int run_batch_shard(const BatchSpec& spec, const runtime::ComponentRegistry& reg, const Shard& s);
+int run_batch_shard(const BatchSpec& spec, const framework::ComponentRegistry& reg, const Shard& s);
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::batch

@@ -10,7 +10,7 @@
 #include "files/write_error.hpp"
 #include "io/recording/record_file.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch::batch {
 
 namespace fs = std::filesystem;
 
@@ -18,13 +18,14 @@ namespace {
 
 std::string file_digest(const fs::path& file) {
     std::ifstream f(file, std::ios::binary);
-    std::uint64_t h = recorder::kFnvBasis;
+    std::uint64_t h = io::recording::kFnvBasis;
     std::vector<char> buf(1 << 16);
     while (f) {
         f.read(buf.data(), static_cast<std::streamsize>(buf.size()));
-        h = recorder::fnv1a(h, reinterpret_cast<const std::uint8_t*>(buf.data()), static_cast<std::size_t>(f.gcount()));
+        h = io::recording::fnv1a(h, reinterpret_cast<const std::uint8_t*>(buf.data()),
+                                 static_cast<std::size_t>(f.gcount()));
     }
-    return recorder::digest_hex(h);
+    return io::recording::digest_hex(h);
 }
 
 // The run folder's result files, relative, sorted: files.yaml itself, temporaries and the logs (log.txt, logs/:
@@ -79,4 +80,4 @@ std::string run_files_damage(const fs::path& run_dir, bool digests) {
     return "";
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::batch

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-namespace gdnav::app {
+namespace gdnav::launch::batch {
 
 inline constexpr const char* kRunFilesName = "files.yaml";
 
@@ -16,4 +16,4 @@ void write_run_files(const std::filesystem::path& run_dir);
 // missing, of another size or (with digests) another digest. Without digests only the sizes are compared.
 [[nodiscard]] std::string run_files_damage(const std::filesystem::path& run_dir, bool digests);
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::batch

@@ -17,23 +17,23 @@
 #include "launch/batch/batch_runner.hpp"
 #include "launch/launcher.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch::bench {
 
-using namespace gdnav::runtime;
+using namespace gdnav::launch;
 namespace fs = std::filesystem;
 
 namespace {
 
 // Steps/s of the scenario in one layout ("composed+security": composed with o.security).
-double measure_layout(const BenchOptions& o, const ComponentRegistry& reg, const std::string& name,
+double measure_layout(const BenchOptions& o, const framework::ComponentRegistry& reg, const std::string& name,
                       const fs::path& base, double& dt_s) {
     const bool secure = name == "composed+security";
     const std::string layout = secure ? "composed" : name;
-    RunOverrides ro;
+    framework::RunOverrides ro;
     ro.steps = o.steps;
     ro.out_dir = (base / name).string();
     if (secure) ro.security = o.security;
-    RunConfig rc = RunConfig::load(resolve_scenario(o.scenario), ro);
+    framework::RunConfig rc = framework::RunConfig::load(framework::resolve_scenario(o.scenario), ro);
     dt_s = rc.info.dt_s;
     double sps = 0.0;
     if (layout == "direct") {
@@ -52,13 +52,14 @@ double measure_layout(const BenchOptions& o, const ComponentRegistry& reg, const
 // Cost of each component's step, measured in the direct layout (no transport): the executor reads the steady clock
 // around each component's step (two clock reads per component and step).
 std::vector<std::pair<std::string, double>> measure_component_costs(const BenchOptions& o,
-                                                                    const ComponentRegistry& reg, const fs::path& base) {
-    RunOverrides ro;
+                                                                    const framework::ComponentRegistry& reg,
+                                                                    const fs::path& base) {
+    framework::RunOverrides ro;
     ro.steps = o.steps;
     ro.out_dir = (base / "profile").string();
-    RunConfig rc = RunConfig::load(resolve_scenario(o.scenario), ro);
+    framework::RunConfig rc = framework::RunConfig::load(framework::resolve_scenario(o.scenario), ro);
     fs::create_directories(rc.out_dir);
-    DirectExecutor ex(rc.build(reg), rc.info);
+    framework::DirectExecutor ex(rc.build(reg), rc.info);
     ex.enable_profiling();
     ex.run();
     const auto us = ex.mean_step_us(rc.info.steps);
@@ -70,18 +71,18 @@ std::vector<std::pair<std::string, double>> measure_component_costs(const BenchO
 // Runs per minute of full-length runs of paper scenario `scenario` in the direct layout: a batch of o.mc_runs runs
 // (o.mc_steps steps each, or full length), o.mc_jobs at a time, timed without the report and extrapolated in
 // proportion to the steps.
-BenchMcFigure measure_montecarlo(const BenchOptions& o, const ComponentRegistry& reg, const std::string& scenario,
-                                 const fs::path& base) {
+BenchMcFigure measure_montecarlo(const BenchOptions& o, const framework::ComponentRegistry& reg,
+                                 const std::string& scenario, const fs::path& base) {
     BenchMcFigure f;
     f.scenario = scenario;
     f.runs = o.mc_runs;
-    RunOverrides ro;
+    framework::RunOverrides ro;
     ro.out_dir = (base / ("mc_full_" + scenario)).string();
-    f.steps_full = RunConfig::load(resolve_scenario("paper" + scenario), ro).info.steps;
+    f.steps_full = framework::RunConfig::load(framework::resolve_scenario("paper" + scenario), ro).info.steps;
     f.steps_run = o.mc_steps > 0 ? o.mc_steps : f.steps_full;
-    BatchSpec b;
+    batch::BatchSpec b;
     b.scenario = scenario;
-    b.file = fs::absolute(resolve_scenario("paper" + scenario));
+    b.file = fs::absolute(framework::resolve_scenario("paper" + scenario));
     b.doc = YAML::Clone(config::Config::load(b.file).node());
     b.runs = o.mc_runs;
     b.jobs = o.mc_jobs;
@@ -89,9 +90,9 @@ BenchMcFigure measure_montecarlo(const BenchOptions& o, const ComponentRegistry&
     b.seed_given = true;
     b.out = base / ("mc_" + scenario);
     b.log_level = o.log_level;
-    const double t0 = steady_now_s();
-    if (run_batch_shard(b, reg, Shard{}) != 0) throw std::runtime_error("bench: the Monte Carlo batch failed");
-    f.wall_s = steady_now_s() - t0;
+    const double t0 = framework::steady_now_s();
+    if (batch::run_batch_shard(b, reg, batch::Shard{}) != 0) throw std::runtime_error("bench: the Monte Carlo batch failed");
+    f.wall_s = framework::steady_now_s() - t0;
     f.runs_per_minute = 60.0 * static_cast<double>(f.runs) / f.wall_s * static_cast<double>(f.steps_run) /
                         static_cast<double>(f.steps_full);
     return f;
@@ -99,7 +100,7 @@ BenchMcFigure measure_montecarlo(const BenchOptions& o, const ComponentRegistry&
 
 }  // namespace
 
-BenchFigures measure_bench(const BenchOptions& o, const ComponentRegistry& reg) {
+BenchFigures measure_bench(const BenchOptions& o, const framework::ComponentRegistry& reg) {
     const auto base = fs::temp_directory_path() / ("gdnav-bench-" + std::to_string(getpid()));
     BenchFigures fig;
     fig.scenario = o.scenario;
@@ -144,4 +145,4 @@ void write_bench_json(const BenchFigures& fig, const std::string& file) {
     spdlog::info("bench: figures written to {}", file);
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::bench

@@ -10,7 +10,7 @@
 #include "framework/registry.hpp"
 #include "launch/bench/bench_json.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch::bench {
 
 struct BenchOptions {
     std::string scenario{"default"};
@@ -26,7 +26,7 @@ struct BenchOptions {
 
 // Measures every figure of the session (work files in a temporary folder, removed at the end). Throws when a
 // layout's run fails (std::runtime_error naming the layout) or the Monte Carlo batch fails.
-BenchFigures measure_bench(const BenchOptions& o, const runtime::ComponentRegistry& reg);
+BenchFigures measure_bench(const BenchOptions& o, const framework::ComponentRegistry& reg);
 
 // The figures as the text tables `gdnav bench` prints.
 std::string bench_tables(const BenchFigures& f, const BenchOptions& o);
@@ -34,4 +34,4 @@ std::string bench_tables(const BenchFigures& f, const BenchOptions& o);
 // Writes bench_json(f, machine_info()) to `file`; throws std::runtime_error when it cannot.
 void write_bench_json(const BenchFigures& f, const std::string& file);
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::bench

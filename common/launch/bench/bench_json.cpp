@@ -9,7 +9,7 @@
 
 #include "framework/run_config.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch::bench {
 
 namespace {
 
@@ -62,7 +62,7 @@ MachineInfo machine_info() {
     if (m.cores == 0) m.cores = std::thread::hardware_concurrency();
     if (m.cpu_model.empty()) m.cpu_model = "unknown";
     std::ifstream("/proc/loadavg") >> m.load_1min;
-    const std::string src = runtime::config_dir().parent_path().string();
+    const std::string src = framework::config_dir().parent_path().string();
     m.git_commit = command_output("git -C '" + src + "' rev-parse HEAD 2>/dev/null");
     if (m.git_commit.size() != 40)
         m.git_commit = "unknown";
@@ -103,4 +103,4 @@ std::string bench_json(const BenchFigures& f, const MachineInfo& m) {
     return o.str();
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::bench

@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-namespace gdnav::app {
+namespace gdnav::launch::bench {
 
 struct BenchLayoutFigure {
     std::string layout;
@@ -44,4 +44,4 @@ MachineInfo machine_info();
 
 std::string bench_json(const BenchFigures& f, const MachineInfo& m);
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::bench

@@ -18,7 +18,7 @@
 #include "framework/topic_types.hpp"
 #include "msgs/messages.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch::fault {
 
 using namespace eprosima::fastdds::dds;
 
@@ -48,21 +48,21 @@ std::string fault_entry_yaml(const FaultRequestSpec& a) {
 }
 
 int send_fault_request(const FaultRequestSpec& a, const std::string& entry) {
-    runtime::register_gdnav_topics();
-    if (!a.security.empty()) runtime::security::check_identity(a.security, runtime::security::kOperatorIdentity);
-    runtime::DdsContext dds(a.domain, runtime::config_dir() / "dds/gdnav_profiles.xml", "gdnav.fault", a.security,
-                            runtime::security::kOperatorIdentity);
-    DataWriter* w = dds.writer(topics::kFaultRequest, runtime::message_ops<msg::FaultRequest>(),
-                               runtime::kControlWriterProfile);
-    DataReader* r = dds.reader(topics::kStatus, runtime::message_ops<msg::ComponentStatus>(),
-                               runtime::kControlReaderProfile);
+    framework::register_gdnav_topics();
+    if (!a.security.empty()) pki::check_identity(a.security, dds::security::kOperatorIdentity);
+    dds::DdsContext dds(a.domain, framework::config_dir() / "dds/gdnav_profiles.xml", "gdnav.fault", a.security,
+                            dds::security::kOperatorIdentity);
+    DataWriter* w = dds.writer(topics::kFaultRequest, msg::message_ops<msg::FaultRequest>(),
+                               dds::kControlWriterProfile);
+    DataReader* r = dds.reader(topics::kStatus, msg::message_ops<msg::ComponentStatus>(),
+                               dds::kControlReaderProfile);
     const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(a.timeout_s);
     PublicationMatchedStatus st;
     while (w->get_publication_matched_status(st), st.current_count == 0) {
         if (std::chrono::steady_clock::now() > end) {
             spdlog::error("no clock on DDS domain {} took the fault request within {:.0f} s (is a run going?)",
                           a.domain, a.timeout_s);
-            return runtime::kExitStartup;
+            return framework::kExitStartup;
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
@@ -72,13 +72,13 @@ int send_fault_request(const FaultRequestSpec& a, const std::string& entry) {
     std::uint64_t token = 0;
     while (token == 0) {
         while (token == 0 && r->take_next_sample(&s, &info) == ReturnCode_t::RETCODE_OK)
-            if (info.valid_data && s.member().to_string() == runtime::kClockName && s.run_id() == a.run_index)
+            if (info.valid_data && s.member().to_string() == framework::kClockName && s.run_id() == a.run_index)
                 token = s.run_token();
         if (token != 0) break;
         if (std::chrono::steady_clock::now() > end) {
             spdlog::error("no clock of run id {} on DDS domain {} within {:.0f} s (is a run going?)", a.run_index,
                           a.domain, a.timeout_s);
-            return runtime::kExitStartup;
+            return framework::kExitStartup;
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
@@ -92,21 +92,21 @@ int send_fault_request(const FaultRequestSpec& a, const std::string& entry) {
     const std::string prefix = "fault " + std::to_string(req.request_id()) + " ";
     while (std::chrono::steady_clock::now() < end) {
         while (r->take_next_sample(&s, &info) == ReturnCode_t::RETCODE_OK) {
-            if (!info.valid_data || s.member().to_string() != runtime::kClockName || s.run_token() != token) continue;
+            if (!info.valid_data || s.member().to_string() != framework::kClockName || s.run_token() != token) continue;
             const std::string m = s.message().to_string();
             if (m.rfind(prefix, 0) != 0) continue;
             if (s.kind() == msg::STATUS_ERROR) {
                 spdlog::error("{}", m);
-                return runtime::kExitConfig;
+                return framework::kExitConfig;
             }
             spdlog::info("{}", m);
-            return runtime::kExitOk;
+            return framework::kExitOk;
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     spdlog::error("the clock on DDS domain {} did not answer the fault request within {:.0f} s", a.domain,
                   a.timeout_s);
-    return runtime::kExitStartup;
+    return framework::kExitStartup;
 }
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::fault

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace gdnav::app {
+namespace gdnav::launch::fault {
 
 struct FaultRequestSpec {
     int domain{0};
@@ -29,4 +29,4 @@ std::string fault_entry_yaml(const FaultRequestSpec& a);
 // (its message logged), kExitStartup when no clock matched or answered within timeout_s.
 int send_fault_request(const FaultRequestSpec& a, const std::string& entry);
 
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::fault

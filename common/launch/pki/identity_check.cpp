@@ -13,7 +13,7 @@
 #include "config/config.hpp"
 #include "dds/security/security.hpp"
 
-namespace gdnav::runtime::security {
+namespace gdnav::launch::pki {
 
 namespace fs = std::filesystem;
 
@@ -99,8 +99,8 @@ void check_identity(const fs::path& dir, const std::string& identity) {
     X509_NAME_print_ex(name_out.get(), X509_get_subject_name(cert.get()), 0, XN_FLAG_RFC2253);
     char* name_data = nullptr;
     const std::string subject(name_data, static_cast<std::size_t>(BIO_get_mem_data(name_out.get(), &name_data)));
-    if (subject != subject_name(identity))
-        fail(cert_file, "subject is '" + subject + "', expected '" + subject_name(identity) + "'");
+    if (subject != dds::security::subject_name(identity))
+        fail(cert_file, "subject is '" + subject + "', expected '" + dds::security::subject_name(identity) + "'");
 
     Bio kb = open_file(key_file);
     std::unique_ptr<EVP_PKEY, KeyFree> key(PEM_read_bio_PrivateKey(kb.get(), nullptr, nullptr, nullptr));
@@ -109,8 +109,9 @@ void check_identity(const fs::path& dir, const std::string& identity) {
 
     verify_signed(dir / "governance.p7s", ca.get());
     const std::string permissions = verify_signed(dir / "permissions.p7s", ca.get());
-    if (permissions.find("<subject_name>" + subject_name(identity) + "</subject_name>") == std::string::npos)
+    if (permissions.find("<subject_name>" + dds::security::subject_name(identity) + "</subject_name>") ==
+        std::string::npos)
         fail(dir / "permissions.p7s", "no grant for identity '" + identity + "' (re-run gdnav pki init with it)");
 }
 
-}  // namespace gdnav::runtime::security
+}  // namespace gdnav::launch::pki

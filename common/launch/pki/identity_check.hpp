@@ -7,11 +7,11 @@
 #include <filesystem>
 #include <string>
 
-namespace gdnav::runtime::security {
+namespace gdnav::launch::pki {
 
 // Checks that DIR holds a usable identity: the CA, the identity's certificate signed by it and valid now, the key
 // matching the certificate, governance and permissions documents signed by the CA, and a grant for the identity.
 // Throws config::ConfigError with one line naming the file and the problem.
 void check_identity(const std::filesystem::path& dir, const std::string& identity);
 
-}  // namespace gdnav::runtime::security
+}  // namespace gdnav::launch::pki

@@ -14,7 +14,7 @@
 
 extern char** environ;
 
-namespace gdnav::runtime::security {
+namespace gdnav::launch::pki {
 
 namespace fs = std::filesystem;
 
@@ -106,7 +106,7 @@ std::string permissions_xml(const std::vector<Identity>& ids, const std::string&
 )";
     for (const auto& id : ids) {
         x << "    <grant name=\"" << id.name << "\">\n"
-          << "      <subject_name>" << subject_name(id.name) << "</subject_name>\n"
+          << "      <subject_name>" << dds::security::subject_name(id.name) << "</subject_name>\n"
           << "      <validity><not_before>" << not_before << "</not_before><not_after>" << not_after
           << "</not_after></validity>\n"
           << "      <allow_rule>\n"
@@ -136,12 +136,13 @@ void init_pki(const fs::path& dir, const std::vector<Identity>& ids, const PkiOp
     const std::string ca_key = (dir / "ca.key").string(), ca_pem = (dir / "ca.pem").string();
     ssl({"genpkey", "-algorithm", "EC", "-pkeyopt", "ec_paramgen_curve:P-256", "-out", ca_key});
     ssl({"req", "-x509", "-new", "-key", ca_key, "-sha256", "-days", days, "-subj",
-         std::string("/CN=gdnav CA/O=") + kOrganisation, "-out", ca_pem});
+         std::string("/CN=gdnav CA/O=") + dds::security::kOrganisation, "-out", ca_pem});
     for (const auto& id : ids) {
         const fs::path base = dir / "identities" / id.name;
         const std::string key = base.string() + ".key", csr = base.string() + ".csr", pem = base.string() + ".pem";
         ssl({"genpkey", "-algorithm", "EC", "-pkeyopt", "ec_paramgen_curve:P-256", "-out", key});
-        ssl({"req", "-new", "-key", key, "-subj", "/CN=" + id.name + "/O=" + kOrganisation, "-out", csr});
+        ssl({"req", "-new", "-key", key, "-subj", "/CN=" + id.name + "/O=" + dds::security::kOrganisation, "-out",
+             csr});
         ssl({"x509", "-req", "-in", csr, "-CA", ca_pem, "-CAkey", ca_key, "-CAcreateserial", "-sha256", "-days",
              days, "-out", pem});
         fs::remove(csr);
@@ -157,4 +158,4 @@ void init_pki(const fs::path& dir, const std::vector<Identity>& ids, const PkiOp
     fs::remove(dir / "ca.srl");
 }
 
-}  // namespace gdnav::runtime::security
+}  // namespace gdnav::launch::pki

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace gdnav::runtime::security {
+namespace gdnav::launch::pki {
 
 struct Identity {
     std::string name;
@@ -32,4 +32,4 @@ void init_pki(const std::filesystem::path& dir, const std::vector<Identity>& ids
 // Runs the openssl tool with these arguments; throws std::runtime_error with its stderr when it fails.
 void run_openssl(const std::string& openssl, const std::vector<std::string>& args, const std::filesystem::path& log);
 
-}  // namespace gdnav::runtime::security
+}  // namespace gdnav::launch::pki

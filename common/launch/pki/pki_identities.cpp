@@ -6,7 +6,7 @@
 #include "dds/security/security.hpp"
 #include "msgs/messages.hpp"
 
-namespace gdnav::runtime::security {
+namespace gdnav::launch::pki {
 
 namespace {
 
@@ -18,11 +18,11 @@ std::vector<std::string> member_publish(std::vector<std::string> outputs) {
 
 }  // namespace
 
-std::vector<Identity> run_identities(const RunConfig& rc, const ComponentRegistry& reg,
+std::vector<Identity> run_identities(const framework::RunConfig& rc, const framework::ComponentRegistry& reg,
                                      const std::vector<std::string>& external_members) {
     std::vector<Identity> ids{
-        {kClockIdentity, {topics::kTick, topics::kRunControl, topics::kStatus}},
-        {kOperatorIdentity, {topics::kFaultRequest}},
+        {dds::security::kClockIdentity, {topics::kTick, topics::kRunControl, topics::kStatus}},
+        {dds::security::kOperatorIdentity, {topics::kFaultRequest}},
     };
     std::set<std::string> all_outputs;
     for (const auto& c : rc.build(reg)) {
@@ -37,9 +37,9 @@ std::vector<Identity> run_identities(const RunConfig& rc, const ComponentRegistr
     for (const auto& id : ids) names.insert(id.name);
     // `gdnav run --record` adds a member `recorder` (no outputs) to any scenario.
     if (!names.count("recorder")) ids.push_back({"recorder", member_publish({})});
-    ids.push_back({kComposedIdentity, member_publish({all_outputs.begin(), all_outputs.end()})});
+    ids.push_back({dds::security::kComposedIdentity, member_publish({all_outputs.begin(), all_outputs.end()})});
     names.insert("recorder");
-    names.insert(kComposedIdentity);
+    names.insert(dds::security::kComposedIdentity);
     for (const auto& m : external_members) {
         const auto eq = m.find('=');
         const std::string name = m.substr(0, eq);
@@ -62,4 +62,4 @@ std::vector<Identity> run_identities(const RunConfig& rc, const ComponentRegistr
     return ids;
 }
 
-}  // namespace gdnav::runtime::security
+}  // namespace gdnav::launch::pki

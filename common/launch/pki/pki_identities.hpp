@@ -10,11 +10,11 @@
 #include "framework/run_config.hpp"
 #include "launch/pki/pki.hpp"
 
-namespace gdnav::runtime::security {
+namespace gdnav::launch::pki {
 
 // Throws config::ConfigError (one line naming the --member value) for a malformed external member or a name that
 // already has an identity.
-std::vector<Identity> run_identities(const RunConfig& rc, const ComponentRegistry& reg,
+std::vector<Identity> run_identities(const framework::RunConfig& rc, const framework::ComponentRegistry& reg,
                                      const std::vector<std::string>& external_members);
 
-}  // namespace gdnav::runtime::security
+}  // namespace gdnav::launch::pki

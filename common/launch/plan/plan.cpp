@@ -12,7 +12,7 @@
 #include "config/config.hpp"
 #include "framework/run_config.hpp"
 
-namespace gdnav::runtime::deploy {
+namespace gdnav::launch::deploy {
 
 namespace fs = std::filesystem;
 using config::Config;
@@ -53,7 +53,7 @@ Plan Plan::load(const fs::path& file) {
     p.domain_id = static_cast<int>(top.get_int("domain_id", 0, 232));
     p.discovery = top.get_choice("discovery", "peers", {"multicast", "peers", "server"});
     const std::string profile = top.get_string("dds_profile", "dds/gdnav_profiles.xml");
-    p.dds_profile = fs::path(profile).is_relative() ? config_dir() / profile : fs::path(profile);
+    p.dds_profile = fs::path(profile).is_relative() ? framework::config_dir() / profile : fs::path(profile);
     if (!fs::is_regular_file(p.dds_profile)) top.fail("dds_profile", "'" + p.dds_profile.string() + "': no such file");
     const Config hosts = top.child("hosts");
     std::set<std::string> seen_members, seen_addresses;
@@ -173,4 +173,4 @@ std::string plan_profile_xml(const Plan& plan) {
     return xml;
 }
 
-}  // namespace gdnav::runtime::deploy
+}  // namespace gdnav::launch::deploy

@@ -23,7 +23,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-namespace gdnav::runtime::deploy {
+namespace gdnav::launch::deploy {
 
 struct PlanHost {
     std::string name;
@@ -58,4 +58,4 @@ std::string plan_profile_xml(const Plan& plan);
 // GUID prefix of discovery server `id` as `fastdds discovery -i ID` makes it (44.53.<id>.5f.45.50.52.4f.53.49.4d.41).
 std::string server_prefix(int id);
 
-}  // namespace gdnav::runtime::deploy
+}  // namespace gdnav::launch::deploy

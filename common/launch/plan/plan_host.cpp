@@ -10,20 +10,20 @@
 
 #include "config/config.hpp"
 
-namespace gdnav::runtime::deploy {
+namespace gdnav::launch::deploy {
 
 namespace fs = std::filesystem;
 
 namespace {
 
 // The run: the scenario with the plan's run keys, domain and profile (same on every host).
-RunConfig plan_run_config(const Plan& plan, const PlanHostRequest& req, const fs::path& scenario_file,
-                          const fs::path& out, const fs::path& xml, const ComponentRegistry& reg) {
+framework::RunConfig plan_run_config(const Plan& plan, const PlanHostRequest& req, const fs::path& scenario_file,
+                          const fs::path& out, const fs::path& xml, const framework::ComponentRegistry& reg) {
     YAML::Node doc = YAML::LoadFile(scenario_file.string());
     if (plan.run_overrides)
         for (const auto& kv : plan.run_overrides) doc["run"][kv.first.as<std::string>()] = YAML::Clone(kv.second);
     doc["run"]["dds_profile"] = xml.string();
-    RunOverrides o;
+    framework::RunOverrides o;
     o.domain_id = plan.domain_id;
     o.out_dir = out.string();
     if (plan.seed) o.seed = *plan.seed;
@@ -31,8 +31,8 @@ RunConfig plan_run_config(const Plan& plan, const PlanHostRequest& req, const fs
     YAML::Emitter em;
     em.SetDoublePrecision(17);
     em << doc;
-    RunConfig rc = RunConfig::parse(em.c_str(), scenario_file.string(), o);
-    if (!req.rw.empty()) rc = app::apply_run_rewrites(rc, req.rw, reg);
+    framework::RunConfig rc = framework::RunConfig::parse(em.c_str(), scenario_file.string(), o);
+    if (!req.rw.empty()) rc = launch::apply_run_rewrites(rc, req.rw, reg);
     return rc;
 }
 
@@ -92,7 +92,7 @@ fs::path find_program(const std::string& program) {
 }
 
 PlanHostRun plan_host_run(const Plan& plan, const PlanHostRequest& req, const fs::path& scenario_file,
-                          const ComponentRegistry& reg) {
+                          const framework::ComponentRegistry& reg) {
     const PlanHost& host = req.host.empty() ? plan.clock_host() : plan.host(req.host);
     const fs::path out = req.out.empty() ? fs::path("out/plan") / host.name : req.out;
     fs::create_directories(out);
@@ -107,4 +107,4 @@ PlanHostRun plan_host_run(const Plan& plan, const PlanHostRequest& req, const fs
     return r;
 }
 
-}  // namespace gdnav::runtime::deploy
+}  // namespace gdnav::launch::deploy

@@ -14,7 +14,7 @@
 #include "launch/plan/plan.hpp"
 #include "launch/run_rewrites.hpp"
 
-namespace gdnav::runtime::deploy {
+namespace gdnav::launch::deploy {
 
 // The program that runs a discovery server (Debian's fastdds-tools).
 inline constexpr const char* kDiscoveryServerProgram = "fast-discovery-server";
@@ -23,13 +23,13 @@ struct PlanHostRequest {
     std::string host;                     // empty: the host with the clock
     std::filesystem::path out;            // empty: out/plan/<host>
     std::uint64_t steps{0};               // > 0: override the number of steps
-    app::RunRewrites rw;                  // --record only
+    launch::RunRewrites rw;               // --record only
     std::string log_level{"info"};
 };
 
 // What the host runs: the resolved run, the launcher's options for its slice, and one line naming what runs where.
 struct PlanHostRun {
-    RunConfig rc;
+    framework::RunConfig rc;
     LaunchOptions lo;
     std::string summary;
 };
@@ -39,9 +39,9 @@ struct PlanHostRun {
 // host or the key) for a host not in the plan, a member placed on no host or two, or a discovery server program not
 // on PATH.
 PlanHostRun plan_host_run(const Plan& plan, const PlanHostRequest& req, const std::filesystem::path& scenario_file,
-                          const ComponentRegistry& reg);
+                          const framework::ComponentRegistry& reg);
 
 // Absolute path of `program` on $PATH; throws config::ConfigError naming it when it is not there.
 std::filesystem::path find_program(const std::string& program);
 
-}  // namespace gdnav::runtime::deploy
+}  // namespace gdnav::launch::deploy

@@ -102,7 +102,7 @@ TEST(Plan, BadPlansAreOneClearErrorEach) {
         const Result r = run({GDNAV_GDNAV_EXE, "host", "--plan", plan.string(), "--name", "b", "--steps", "10",
                               "--out", (plan.parent_path() / "out").string()},
                              30.0);
-        EXPECT_EQ(r.exit_code, gdnav::runtime::kExitConfig) << c.expect << "\n" << r.output;
+        EXPECT_EQ(r.exit_code, gdnav::framework::kExitConfig) << c.expect << "\n" << r.output;
         EXPECT_NE(r.output.find(c.expect), std::string::npos) << r.output;
         EXPECT_NE(r.output.find(plan.string()), std::string::npos) << "the error names the plan file: " << r.output;
         EXPECT_FALSE(fs::exists(plan.parent_path() / "out" / "processes.yaml")) << r.output;
@@ -244,7 +244,7 @@ TEST(Plan, LinkCutShorterThanTheMemberTimeoutResumesLongerEndsTheRun) {
     cut(2.0, 8.0);
     const int long_a = wait_for(a, 120.0), long_b = wait_for(b, 30.0);
     const std::string long_logs = read_file(long_out / "a.log") + read_file(long_out / "b.log");
-    EXPECT_EQ(long_a, gdnav::runtime::kExitAborted) << long_logs;
+    EXPECT_EQ(long_a, gdnav::framework::kExitAborted) << long_logs;
     EXPECT_NE(long_b, 0) << long_logs;
     EXPECT_NE(long_logs.find("run aborted"), std::string::npos) << long_logs;
     EXPECT_NE(long_logs.find("lost the clock"), std::string::npos) << long_logs;

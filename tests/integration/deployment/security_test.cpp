@@ -24,7 +24,8 @@
 #include "framework/topic_types.hpp"
 
 using namespace gdnav::testing;
-namespace rt = gdnav::runtime;
+namespace msg = gdnav::msg;
+namespace framework = gdnav::framework;
 namespace fs = std::filesystem;
 using namespace eprosima::fastdds::dds;
 
@@ -34,7 +35,7 @@ constexpr int kDomain = 151;  // integration tests run one at a time (RUN_SERIAL
 constexpr const char* kSteps = "3000";
 const char* kRecord = "AirDataEstimate,AttitudeEstimate,PositionEstimate,ControlCommands,ImuSample";
 
-fs::path profile() { return rt::config_dir() / "dds" / "gdnav_profiles.xml"; }
+fs::path profile() { return framework::config_dir() / "dds" / "gdnav_profiles.xml"; }
 
 // One PKI for the suite (gdnav pki init takes about a second per dozen identities).
 const fs::path& pki() {
@@ -66,15 +67,17 @@ struct Outsider {
     std::uint64_t written{0};
 };
 Outsider outsider_during(pid_t launcher, bool attack, int* code) {
-    rt::register_gdnav_topics();
-    rt::DdsContext dds(kDomain, profile(), "gdnav.test.outsider");
+    framework::register_gdnav_topics();
+    gdnav::dds::DdsContext dds(kDomain, profile(), "gdnav.test.outsider");
     // Reads topics it does not write (a reader of its own Tick writer would match it inside its own participant).
-    DataReader* done_r =
-        dds.reader(gdnav::topics::kStepDone, rt::message_ops<gdnav::msg::StepDone>(), rt::kControlReaderProfile);
-    DataReader* imu_r = dds.reader(gdnav::topics::kImu, *rt::find_topic(gdnav::topics::kImu), rt::kDataReaderProfile);
-    DataWriter* tick_w = dds.writer(gdnav::topics::kTick, rt::message_ops<gdnav::msg::Tick>(), rt::kControlWriterProfile);
-    DataWriter* ctl_w =
-        dds.writer(gdnav::topics::kRunControl, rt::message_ops<gdnav::msg::RunControl>(), rt::kLatchedWriterProfile);
+    DataReader* done_r = dds.reader(gdnav::topics::kStepDone, msg::message_ops<gdnav::msg::StepDone>(),
+                                    gdnav::dds::kControlReaderProfile);
+    DataReader* imu_r =
+        dds.reader(gdnav::topics::kImu, *framework::find_topic(gdnav::topics::kImu), gdnav::dds::kDataReaderProfile);
+    DataWriter* tick_w =
+        dds.writer(gdnav::topics::kTick, msg::message_ops<gdnav::msg::Tick>(), gdnav::dds::kControlWriterProfile);
+    DataWriter* ctl_w = dds.writer(gdnav::topics::kRunControl, msg::message_ops<gdnav::msg::RunControl>(),
+                                   gdnav::dds::kLatchedWriterProfile);
     Outsider o;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(150);
     while ((*code = wait_for(launcher, 0.0)) == -1 && std::chrono::steady_clock::now() < deadline) {
@@ -141,19 +144,24 @@ TEST(Security, SecureRunIsBitIdenticalAndAnOutsiderWithoutCertificateIsNeverMatc
 }
 
 TEST(Security, ACertifiedParticipantCannotWriteATopicItsPermissionsDoNotGrant) {
-    rt::register_gdnav_topics();
-    rt::DdsContext dds(kDomain, profile(), "gdnav.test.gnss", pki(), "sensors_gnss");
+    framework::register_gdnav_topics();
+    gdnav::dds::DdsContext dds(kDomain, profile(), "gdnav.test.gnss", pki(), "sensors_gnss");
     // Granted: its own output.
-    EXPECT_NO_THROW(dds.writer(gdnav::topics::kGnss, *rt::find_topic(gdnav::topics::kGnss), rt::kDataWriterProfile));
+    EXPECT_NO_THROW(
+        dds.writer(gdnav::topics::kGnss, *framework::find_topic(gdnav::topics::kGnss), gdnav::dds::kDataWriterProfile));
     // Not granted: the clock's Tick, the physics' Truth, another sensor's samples.
-    EXPECT_THROW(dds.writer(gdnav::topics::kTick, rt::message_ops<gdnav::msg::Tick>(), rt::kControlWriterProfile),
+    EXPECT_THROW(
+        dds.writer(gdnav::topics::kTick, msg::message_ops<gdnav::msg::Tick>(), gdnav::dds::kControlWriterProfile),
+        std::runtime_error);
+    EXPECT_THROW(dds.writer(gdnav::topics::kTruth, *framework::find_topic(gdnav::topics::kTruth),
+                            gdnav::dds::kDataWriterProfile),
                  std::runtime_error);
-    EXPECT_THROW(dds.writer(gdnav::topics::kTruth, *rt::find_topic(gdnav::topics::kTruth), rt::kDataWriterProfile),
-                 std::runtime_error);
-    EXPECT_THROW(dds.writer(gdnav::topics::kImu, *rt::find_topic(gdnav::topics::kImu), rt::kDataWriterProfile),
-                 std::runtime_error);
+    EXPECT_THROW(
+        dds.writer(gdnav::topics::kImu, *framework::find_topic(gdnav::topics::kImu), gdnav::dds::kDataWriterProfile),
+        std::runtime_error);
     // Reading is granted for every topic.
-    EXPECT_NO_THROW(dds.reader(gdnav::topics::kTick, rt::message_ops<gdnav::msg::Tick>(), rt::kControlReaderProfile));
+    EXPECT_NO_THROW(
+        dds.reader(gdnav::topics::kTick, msg::message_ops<gdnav::msg::Tick>(), gdnav::dds::kControlReaderProfile));
 }
 
 namespace {
@@ -168,7 +176,7 @@ fs::path copy_pki(const std::string& tag) {
 void expect_refused(const fs::path& dir, const std::string& file, const std::string& what) {
     const auto out = temp_dir("refused");
     const Result r = run(run_argv(out, dir.string()), 60.0);
-    EXPECT_EQ(r.exit_code, rt::kExitConfig) << r.output;
+    EXPECT_EQ(r.exit_code, framework::kExitConfig) << r.output;
     std::size_t errors = 0, pos = 0;
     while ((pos = r.output.find("] error: ", pos)) != std::string::npos) ++errors, ++pos;
     EXPECT_EQ(errors, 1u) << r.output;
@@ -223,7 +231,7 @@ TEST(Security, BadMaterialIsOneClearErrorAndNothingStarts) {
     // Valid material, but the distributed layout: refused up front rather than timing out on unmatched endpoints.
     const auto dist_out = temp_dir("distributed");
     const Result dist = run(run_argv(dist_out, pki().string(), "distributed"), 60.0);
-    EXPECT_EQ(dist.exit_code, rt::kExitConfig) << dist.output;
+    EXPECT_EQ(dist.exit_code, framework::kExitConfig) << dist.output;
     EXPECT_NE(dist.output.find("not with --layout distributed"), std::string::npos) << dist.output;
     EXPECT_FALSE(fs::exists(dist_out / "processes.yaml"));
 

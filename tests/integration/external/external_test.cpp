@@ -64,7 +64,7 @@ TEST(External, NobodyJoiningEndsTheRunWithAClearErrorNamingTheMember) {
     EXPECT_LT(r.wall_s, 20.0) << r.output;
     std::printf("missing external member: exit %d after %.1f s\n", r.exit_code, r.wall_s);
     expect_no_orphans(out);
-    EXPECT_TRUE(gdnav::runtime::stale_fastdds_shm(since).empty());
+    EXPECT_TRUE(gdnav::launch::stale_fastdds_shm(since).empty());
 }
 
 TEST(External, DirectLayoutRejectsExternalMembers) {

@@ -49,7 +49,7 @@ void expect_complete_batch(const fs::path& dir, const Result& r) {
             << read_file(run / "logs" / "nav_att.log");
         const std::string procs = read_file(run / "processes.yaml");
         EXPECT_NE(procs.find("nav_att: {pid: "), std::string::npos) << procs;
-        EXPECT_NE(procs.find("sha256: " + gdnav::runtime::sha256_of_file(example())), std::string::npos) << procs;
+        EXPECT_NE(procs.find("sha256: " + gdnav::launch::sha256_of_file(example())), std::string::npos) << procs;
         EXPECT_EQ(read_file(run / "log.txt").find("declared dead"), std::string::npos) << read_file(run / "log.txt");
     }
 }

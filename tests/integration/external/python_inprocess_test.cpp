@@ -67,7 +67,7 @@ TEST(PythonInProcess, RecordsTheSameTopicsAsTheExternalMember) {
     EXPECT_NE(d.output.find("Python step callback (in process), 3000 steps"), std::string::npos) << d.output;
     EXPECT_EQ(read_digests(direct), want) << read_file(direct / "record" / "digest.yaml");
     // run.yaml names the class's file and records its SHA-256, as processes.yaml does for a started member.
-    const std::string sha = "sha256: " + gdnav::runtime::sha256_of_file(kExample);
+    const std::string sha = "sha256: " + gdnav::launch::sha256_of_file(kExample);
     EXPECT_NE(read_file(direct / "run.yaml").find("type: python_member"), std::string::npos);
     EXPECT_NE(read_file(direct / "run.yaml").find(sha), std::string::npos) << read_file(direct / "run.yaml");
 

@@ -39,7 +39,7 @@ void expect_no_orphans(const std::map<std::string, pid_t>& procs) {
 
 void expect_no_stale_shm(std::time_t since) {
     // Files created since the run started that no live process uses are leftovers.
-    EXPECT_TRUE(gdnav::runtime::stale_fastdds_shm(since).empty());
+    EXPECT_TRUE(gdnav::launch::stale_fastdds_shm(since).empty());
 }
 
 // A random delay (wall clock seeded: the kill step differs between test runs, as a fault should).

@@ -20,16 +20,17 @@
 #include "framework/topic_types.hpp"
 
 using namespace gdnav::testing;
-namespace rt = gdnav::runtime;
+namespace msg = gdnav::msg;
+namespace framework = gdnav::framework;
 using namespace eprosima::fastdds::dds;
 
 TEST(ComposedVisibility, AReaderOutsideTheProcessSeesEveryStepOfALocallyHandedTopic) {
     constexpr int kDomain = 149;  // integration tests run one at a time (RUN_SERIAL)
     constexpr std::uint64_t kSteps = 3000;
-    rt::register_gdnav_topics();
-    const rt::MessageOps* ops = rt::find_topic(gdnav::topics::kImu);
+    framework::register_gdnav_topics();
+    const msg::MessageOps* ops = framework::find_topic(gdnav::topics::kImu);
     ASSERT_NE(ops, nullptr);
-    rt::DdsContext dds(kDomain, rt::config_dir() / "dds" / "gdnav_profiles.xml", "gdnav.test.monitor");
+    gdnav::dds::DdsContext dds(kDomain, framework::config_dir() / "dds" / "gdnav_profiles.xml", "gdnav.test.monitor");
     DataReader* reader = whole_run_reader(dds, gdnav::topics::kImu, *ops, static_cast<std::int32_t>(kSteps) + 16);
     ASSERT_NE(reader, nullptr);
 

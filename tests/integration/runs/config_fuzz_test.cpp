@@ -1,6 +1,6 @@
 // Config fuzzer: every config file the paper scenarios read is mutated one value at a time (config_mutation.hpp) and
 // the scenario validated in-process, exactly as `gdnav validate --scenario paper1|paper2` does
-// (app::validate_scenario).
+// (cli::validate_scenario).
 //
 // Files: config/scenarios/paper1.yaml and paper2.yaml and everything they read (aircraft, Earth magnetic model,
 // autopilot, sensor suite, nav tuning, the baseline variant and the baseline grade files), plus the other nav variant
@@ -95,10 +95,10 @@ struct Outcome {
     std::string error, other;
 };
 
-Outcome validate(const std::string& scenario, const gdnav::runtime::ComponentRegistry& reg) {
+Outcome validate(const std::string& scenario, const gdnav::framework::ComponentRegistry& reg) {
     Outcome o;
     try {
-        (void)gdnav::app::validate_scenario(scenario, reg);
+        (void)gdnav::cli::validate_scenario(scenario, reg);
         o.accepted = true;
     } catch (const gdnav::config::ConfigError& e) {
         o.error = e.what();
@@ -129,7 +129,7 @@ std::string judge(const Outcome& o, const Mutation& m, Kind kind, bool numeric_l
 }  // namespace
 
 TEST(ConfigFuzz, PaperScenarioFilesRejectEveryInvalidMutation) {
-    gdnav::runtime::ComponentRegistry reg;
+    gdnav::framework::ComponentRegistry reg;
     const fs::path tmp = private_config("cfg_fuzz", reg);
     const fs::path cfg = tmp / "config";
 

@@ -196,12 +196,12 @@ void write_derived_scenario(const fs::path& cfg, const std::string& name,
     write_text(cfg / "scenarios" / (name + ".yaml"), emit(doc));
 }
 
-fs::path private_config(const std::string& tag, runtime::ComponentRegistry& reg) {
+fs::path private_config(const std::string& tag, framework::ComponentRegistry& reg) {
     const fs::path tmp = temp_dir(tag);
     fs::copy(fs::path(GDNAV_SOURCE_DIR) / "config", tmp / "config", fs::copy_options::recursive);
     ::setenv("GDNAV_CONFIG_DIR", (tmp / "config").c_str(), 1);
-    runtime::register_gdnav_topics();
-    app::register_all_components(reg);
+    framework::register_gdnav_topics();
+    cli::register_all_components(reg);
     return tmp;
 }
 

@@ -56,6 +56,6 @@ void write_derived_scenario(const std::filesystem::path& cfg, const std::string&
 
 // A private copy of config/ in a temporary directory, read by the validator through GDNAV_CONFIG_DIR, with every
 // component type registered in `reg`. Returns the temporary directory (config/ is below it).
-std::filesystem::path private_config(const std::string& tag, runtime::ComponentRegistry& reg);
+std::filesystem::path private_config(const std::string& tag, framework::ComponentRegistry& reg);
 
 }  // namespace gdnav::testing::fuzz

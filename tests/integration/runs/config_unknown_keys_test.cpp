@@ -10,7 +10,7 @@ namespace fs = std::filesystem;
 using namespace gdnav::testing::fuzz;
 
 TEST(ConfigFuzz, NavTuningAndVariantFilesRejectUnknownKeysAnywhere) {
-    gdnav::runtime::ComponentRegistry reg;
+    gdnav::framework::ComponentRegistry reg;
     const fs::path tmp = private_config("cfg_nav", reg);
     const fs::path cfg = tmp / "config";
 
@@ -33,7 +33,7 @@ TEST(ConfigFuzz, NavTuningAndVariantFilesRejectUnknownKeysAnywhere) {
             write_derived_scenario(cfg, "fuzz_nav", {{"nav_att", "variant", c.file}, {"nav_pos", "variant", c.file}});
         std::string error;
         try {
-            (void)gdnav::app::validate_scenario(variant ? "fuzz_nav" : "paper2", reg);
+            (void)gdnav::cli::validate_scenario(variant ? "fuzz_nav" : "paper2", reg);
         } catch (const gdnav::config::ConfigError& e) {
             error = e.what();
         }

@@ -24,7 +24,8 @@
 #include "process_util.hpp"
 
 using namespace gdnav::testing;
-namespace rt = gdnav::runtime;
+namespace msg = gdnav::msg;
+namespace framework = gdnav::framework;
 namespace fs = std::filesystem;
 
 namespace {
@@ -64,16 +65,16 @@ int finish(pid_t pid) {
 class OtherRun {
 public:
     OtherRun(int domain, std::chrono::milliseconds clock_after)
-        : dds_(domain, rt::config_dir() / "dds" / "gdnav_profiles.xml", "gdnav.test.other") {
-        rt::register_gdnav_topics();
-        writer_ = dds_.writer(gdnav::topics::kStatus, rt::message_ops<gdnav::msg::ComponentStatus>(),
-                              rt::kControlWriterProfile);
+        : dds_(domain, framework::config_dir() / "dds" / "gdnav_profiles.xml", "gdnav.test.other") {
+        framework::register_gdnav_topics();
+        writer_ = dds_.writer(gdnav::topics::kStatus, msg::message_ops<gdnav::msg::ComponentStatus>(),
+                              gdnav::dds::kControlWriterProfile);
         thread_ = std::thread([this, clock_after] {
             const auto t0 = std::chrono::steady_clock::now();
             while (!stop_) {
                 const bool clock = clock_after.count() >= 0 && std::chrono::steady_clock::now() - t0 >= clock_after;
                 write("chain_plant", "");
-                if (clock) write(rt::kClockName, "/elsewhere/other-run");
+                if (clock) write(framework::kClockName, "/elsewhere/other-run");
                 std::this_thread::sleep_for(std::chrono::milliseconds(50));
             }
         });
@@ -99,7 +100,7 @@ private:
         writer_->write(&s);
     }
 
-    rt::DdsContext dds_;
+    gdnav::dds::DdsContext dds_;
     eprosima::fastdds::dds::DataWriter* writer_{nullptr};
     std::atomic<bool> stop_{false};
     std::thread thread_;
@@ -111,10 +112,10 @@ TEST(Domain, AClockHeardAfterTheFirstSecondOfTheClaimIsStillRefused) {
     const fs::path dir = temp_dir("domain-late-clock");
     // The other run's clock is heard 2 s after this run's launcher starts, so after kClaimListenS of its clock's
     // claim (the clock starts after the launcher), while its member is heard from the start.
-    static_assert(rt::kClaimListenS < 2.0 && 2.0 < rt::kClaimLongestS - 0.5);
+    static_assert(framework::kClaimListenS < 2.0 && 2.0 < framework::kClaimLongestS - 0.5);
     const OtherRun other(kLateClockDomain, std::chrono::milliseconds(2000));
     const Result b = run(chain_run(dir / "B", "composed", kLateClockDomain), 60.0);
-    EXPECT_EQ(b.exit_code, rt::kExitStartup) << b.output;
+    EXPECT_EQ(b.exit_code, framework::kExitStartup) << b.output;
     EXPECT_EQ(count_of(b.output, "is in use by another run"), 1u) << b.output;
     EXPECT_NE(b.output.find("output /elsewhere/other-run"), std::string::npos) << b.output;
     EXPECT_FALSE(fs::exists(dir / "B" / "processes.yaml")) << "members were started: " << b.output;
@@ -138,7 +139,7 @@ TEST(Domain, SecondRunOnADomainRefusesBeforeItsMembersStartFirstRunUnchanged) {
     const int a_code = finish(a);
     const std::string a_log = read_file(dir / "A.log");
 
-    EXPECT_EQ(b.exit_code, rt::kExitStartup) << b.output;
+    EXPECT_EQ(b.exit_code, framework::kExitStartup) << b.output;
     EXPECT_EQ(count_of(b.output, "is in use by another run"), 1u) << b.output;
     EXPECT_EQ(count_of(b.output, "] error: "), 1u) << "one line, not more: " << b.output;
     EXPECT_NE(b.output.find("output " + a_out.string()), std::string::npos) << "names the other run: " << b.output;
@@ -161,19 +162,20 @@ TEST(Domain, ControlMessagesOfAnotherRunAreIgnoredAndCounted) {
     // Another run's participant: the statuses of a member that gives up and of a clock, StepDone far ahead for
     // every table index, a last Tick and an ABORT, all with its own token, every 20 ms for 1.5 s once its writers
     // reach the run (a sample written before is lost).
-    rt::register_gdnav_topics();
+    framework::register_gdnav_topics();
     std::uint64_t sent = 0, to_clock = 0;
     {
-        rt::DdsContext dds(kForeignDomain, rt::config_dir() / "dds" / "gdnav_profiles.xml", "gdnav.test.foreign");
+        gdnav::dds::DdsContext dds(kForeignDomain, framework::config_dir() / "dds" / "gdnav_profiles.xml",
+                                   "gdnav.test.foreign");
         using gdnav::msg::ComponentStatus;
-        auto* status_w = dds.writer(gdnav::topics::kStatus, rt::message_ops<ComponentStatus>(),
-                                    rt::kControlWriterProfile);
-        auto* done_w = dds.writer(gdnav::topics::kStepDone, rt::message_ops<gdnav::msg::StepDone>(),
-                                  rt::kControlWriterProfile);
+        auto* status_w = dds.writer(gdnav::topics::kStatus, msg::message_ops<ComponentStatus>(),
+                                    gdnav::dds::kControlWriterProfile);
+        auto* done_w = dds.writer(gdnav::topics::kStepDone, msg::message_ops<gdnav::msg::StepDone>(),
+                                  gdnav::dds::kControlWriterProfile);
         auto* tick_w =
-            dds.writer(gdnav::topics::kTick, rt::message_ops<gdnav::msg::Tick>(), rt::kControlWriterProfile);
-        auto* control_w = dds.writer(gdnav::topics::kRunControl, rt::message_ops<gdnav::msg::RunControl>(),
-                                     rt::kLatchedWriterProfile);
+            dds.writer(gdnav::topics::kTick, msg::message_ops<gdnav::msg::Tick>(), gdnav::dds::kControlWriterProfile);
+        auto* control_w = dds.writer(gdnav::topics::kRunControl, msg::message_ops<gdnav::msg::RunControl>(),
+                                     gdnav::dds::kLatchedWriterProfile);
         constexpr std::uint64_t kToken = 0x0bad0bad0bad0badULL;
         const auto matched = [](eprosima::fastdds::dds::DataWriter* w) {
             eprosima::fastdds::dds::PublicationMatchedStatus st;
@@ -184,12 +186,12 @@ TEST(Domain, ControlMessagesOfAnotherRunAreIgnoredAndCounted) {
             std::this_thread::sleep_for(std::chrono::milliseconds(20));
         const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(1500);
         while (std::chrono::steady_clock::now() < end && wait_for(launcher, 0.0) == -1) {
-            for (const char* name : {"chain_plant", rt::kClockName}) {
+            for (const char* name : {"chain_plant", framework::kClockName}) {
                 ComponentStatus s;
                 s.run_id(0);
                 s.member(name);
                 s.host("foreign:1");
-                s.kind(name == rt::kClockName ? gdnav::msg::STATUS_HEARTBEAT : gdnav::msg::STATUS_EXIT);
+                s.kind(name == framework::kClockName ? gdnav::msg::STATUS_HEARTBEAT : gdnav::msg::STATUS_EXIT);
                 s.message("exit code 4");
                 s.protocol_version(gdnav::msg::LOCKSTEP_PROTOCOL_VERSION);
                 s.run_token(kToken);

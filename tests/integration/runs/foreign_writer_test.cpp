@@ -17,7 +17,8 @@
 #include "msgs/messages.hpp"
 
 using namespace gdnav::testing;
-namespace rt = gdnav::runtime;
+namespace msg = gdnav::msg;
+namespace framework = gdnav::framework;
 using namespace eprosima::fastdds::dds;
 
 namespace {
@@ -34,11 +35,11 @@ std::vector<std::string> run_args(const std::filesystem::path& out) {
 // A plain participant (no member announced): follows the clock's Ticks and writes an AirSample (default values, a
 // valid stamp) for every step from the Tick on, kAhead steps ahead, until `stop`. Returns how many it wrote.
 std::uint64_t rogue(const std::atomic<bool>& stop) {
-    rt::DdsContext dds(kDomain, rt::config_dir() / "dds" / "gdnav_profiles.xml", "rogue");
-    const auto& air = rt::message_ops<gdnav::msg::AirSample>();
-    const auto& tick_ops = rt::message_ops<gdnav::msg::Tick>();
-    DataWriter* w = dds.writer(gdnav::topics::kAir, air, rt::kDataWriterProfile);
-    DataReader* ticks = dds.reader(gdnav::topics::kTick, tick_ops, rt::kControlReaderProfile);
+    gdnav::dds::DdsContext dds(kDomain, framework::config_dir() / "dds" / "gdnav_profiles.xml", "rogue");
+    const auto& air = msg::message_ops<gdnav::msg::AirSample>();
+    const auto& tick_ops = msg::message_ops<gdnav::msg::Tick>();
+    DataWriter* w = dds.writer(gdnav::topics::kAir, air, gdnav::dds::kDataWriterProfile);
+    DataReader* ticks = dds.reader(gdnav::topics::kTick, tick_ops, gdnav::dds::kControlReaderProfile);
     gdnav::msg::AirSample s;
     s.tas_mps(55.0);
     s.aoa_rad(0.3);
@@ -62,7 +63,7 @@ std::uint64_t rogue(const std::atomic<bool>& stop) {
 }  // namespace
 
 TEST(ForeignWriter, APlainParticipantOnADataTopicChangesNothingAndIsCounted) {
-    rt::register_gdnav_topics();
+    framework::register_gdnav_topics();
     const auto ref = temp_dir("foreign-ref");
     const Result r0 = run(run_args(ref), 180.0);
     ASSERT_EQ(r0.exit_code, 0) << r0.output;

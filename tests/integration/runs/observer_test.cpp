@@ -1,4 +1,4 @@
-// An observer member (runtime::Component::observer; the live bridge is one) never holds a distributed run: it is
+// An observer member (framework::Component::observer; the live bridge is one) never holds a distributed run: it is
 // out of the clock's barrier and reads with best-effort readers. The bridge's process is paused (SIGSTOP) from the
 // start of the run until the clock has ended, within the member timeout: a barrier member paused like that would hold
 // every other member within the window (64 steps) and the clock could not end. The bridge, resumed, computes what

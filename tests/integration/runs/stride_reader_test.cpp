@@ -15,17 +15,18 @@
 #include "framework/topic_types.hpp"
 
 using namespace gdnav::testing;
-namespace rt = gdnav::runtime;
+namespace msg = gdnav::msg;
+namespace framework = gdnav::framework;
 using namespace eprosima::fastdds::dds;
 
 TEST(StrideReader, ADistributedRunSendsAStridedReaderExactlyItsSteps) {
     constexpr int kDomain = 148;  // integration tests run one at a time (RUN_SERIAL)
     constexpr std::uint64_t kSteps = 2000, kStride = 10;
-    rt::register_gdnav_topics();
-    const rt::MessageOps* ops = rt::find_topic(gdnav::topics::kImu);
+    framework::register_gdnav_topics();
+    const msg::MessageOps* ops = framework::find_topic(gdnav::topics::kImu);
     ASSERT_NE(ops, nullptr);
-    rt::DdsContext dds(kDomain, rt::config_dir() / "dds" / "gdnav_profiles.xml", "gdnav.test.strided");
-    DataReader* reader = dds.reader(gdnav::topics::kImu, *ops, rt::kDataReaderProfile, kStride);
+    gdnav::dds::DdsContext dds(kDomain, framework::config_dir() / "dds" / "gdnav_profiles.xml", "gdnav.test.strided");
+    DataReader* reader = dds.reader(gdnav::topics::kImu, *ops, gdnav::dds::kDataReaderProfile, kStride);
 
     const auto out = temp_dir("stride-reader");
     const pid_t launcher = start({GDNAV_GDNAV_EXE, "run", "--scenario", "default", "--layout", "distributed", "--steps",

@@ -32,7 +32,7 @@
 
 using namespace gdnav::testing;
 namespace fs = std::filesystem;
-namespace fields = gdnav::runtime::fields;
+namespace fields = gdnav::framework::fields;
 using nlohmann::json;
 
 namespace {
@@ -72,7 +72,7 @@ std::string hex(const std::uint8_t* p, std::size_t n) {
 }  // namespace
 
 TEST(LiveNode, ClientDuringDistributedRunDecodesTheRecordedValues) {
-    gdnav::runtime::register_gdnav_topics();
+    gdnav::framework::register_gdnav_topics();
     const int port = free_port();
     ASSERT_GT(port, 0);
     const fs::path out = temp_dir("live-node");
@@ -101,7 +101,7 @@ TEST(LiveNode, ClientDuringDistributedRunDecodesTheRecordedValues) {
     for (const auto& c : got.at("channels")) {
         const std::string topic = c.at("topic");
         topics.insert(topic);
-        const gdnav::runtime::MessageOps* ops = gdnav::runtime::find_topic(topic);
+        const gdnav::msg::MessageOps* ops = gdnav::framework::find_topic(topic);
         EXPECT_EQ(c.at("encoding"), "cdr") << topic;
         EXPECT_EQ(c.at("schemaEncoding"), "omgidl") << topic;
         if (!ops) {
@@ -109,19 +109,19 @@ TEST(LiveNode, ClientDuringDistributedRunDecodesTheRecordedValues) {
             continue;
         }
         EXPECT_EQ(c.at("schemaName"), ops->type_name) << topic;
-        EXPECT_EQ(c.at("schema"), std::string(gdnav::runtime::topic_schema_idl(topic))) << topic;
+        EXPECT_EQ(c.at("schema"), std::string(gdnav::framework::topic_schema_idl(topic))) << topic;
     }
-    for (const auto& t : gdnav::runtime::known_topics()) EXPECT_TRUE(topics.count(t)) << "not advertised: " << t;
+    for (const auto& t : gdnav::framework::known_topics()) EXPECT_TRUE(topics.count(t)) << "not advertised: " << t;
     for (const char* v : {"/viewer/true/fix", "/viewer/est/fix", "/viewer/true/tf", "/viewer/est/tf", "/viewer/nav_errors",
                           "/viewer/true/pose", "/viewer/est/pose"})
         EXPECT_TRUE(topics.count(v)) << "not advertised: " << v;
 
     // Every data topic: messages at steps k % 10 == 0 only, log time = step * dt_ns, and at the sampled
     // steps every field (Foxglove's deserializer) and the bytes equal the recording's.
-    const gdnav::recorder::Recording rec = gdnav::recorder::read_recording(out / "record");
+    const gdnav::io::recording::Recording rec = gdnav::io::recording::read_recording(out / "record");
     ASSERT_TRUE(rec.complete) << rec.problem;
     std::size_t compared_fields = 0;
-    for (const auto& topic : gdnav::runtime::known_topics()) {
+    for (const auto& topic : gdnav::framework::known_topics()) {
         ASSERT_TRUE(got.at("topics").contains(topic)) << "no message of " << topic;
         const json& t = got.at("topics").at(topic);
         EXPECT_GT(t.at("count").get<int>(), 100) << topic;
@@ -133,10 +133,10 @@ TEST(LiveNode, ClientDuringDistributedRunDecodesTheRecordedValues) {
                 EXPECT_GT(step, t.at("steps")[i - 1].get<std::uint64_t>()) << topic;
             }
         }
-        const gdnav::recorder::TopicRecord& tr = rec.topics.at(topic);
+        const gdnav::io::recording::TopicRecord& tr = rec.topics.at(topic);
         const fields::TypeFields* table = fields::find_type_fields(tr.ops->type_name);
         ASSERT_NE(table, nullptr) << tr.ops->type_name;
-        gdnav::recorder::SampleDecoder dec(*tr.ops);
+        gdnav::io::recording::SampleDecoder dec(*tr.ops);
         std::unique_ptr<void, void (*)(void*)> s(tr.ops->create(), tr.ops->destroy);
         int compared_steps = 0;
         for (const auto& [step_text, sample] : t.at("samples").items()) {
@@ -168,7 +168,7 @@ TEST(LiveNode, ClientDuringDistributedRunDecodesTheRecordedValues) {
     const json& fix = got.at("topics").at("/viewer/true/fix");
     EXPECT_GT(fix.at("count").get<int>(), 50);
     const auto& truth = rec.topics.at("gdnav/Truth");
-    gdnav::recorder::SampleDecoder tdec(*truth.ops);
+    gdnav::io::recording::SampleDecoder tdec(*truth.ops);
     std::unique_ptr<void, void (*)(void*)> ts(truth.ops->create(), truth.ops->destroy);
     const fields::TypeFields* ttable = fields::find_type_fields(truth.ops->type_name);
     int fixes = 0;

@@ -23,7 +23,7 @@
 
 using namespace gdnav::testing;
 namespace fs = std::filesystem;
-namespace fields = gdnav::runtime::fields;
+namespace fields = gdnav::framework::fields;
 
 namespace {
 
@@ -177,7 +177,7 @@ std::string h5_expected(const fs::path& h5, double t0_s, double dt_s, const std:
 }  // namespace
 
 TEST(McapNode, OfficialReaderDecodesEveryMessageLikeGdnavsReader) {
-    gdnav::runtime::register_gdnav_topics();
+    gdnav::framework::register_gdnav_topics();
     const fs::path out = temp_dir("mcap-node");
     // Scenario #2, seed 1, 3001 steps (t = -50 .. -20 s), every data topic (1 MiB chunks: 4 of them).
     const Result r = run({GDNAV_GDNAV_EXE, "run", "--scenario", "paper2", "--seed", "1", "--steps", "3001", "--layout",
@@ -186,9 +186,9 @@ TEST(McapNode, OfficialReaderDecodesEveryMessageLikeGdnavsReader) {
     ASSERT_EQ(r.exit_code, 0) << r.output;
 
     // Expected values from gdnav's own reader: every field at steps 0, 1, 997, 1500 and the last.
-    const gdnav::recorder::Recording rec = gdnav::recorder::read_recording(out / "record");
+    const gdnav::io::recording::Recording rec = gdnav::io::recording::read_recording(out / "record");
     ASSERT_TRUE(rec.complete) << rec.problem;
-    ASSERT_EQ(rec.topics.size(), gdnav::runtime::known_topics().size());
+    ASSERT_EQ(rec.topics.size(), gdnav::framework::known_topics().size());
     std::ostringstream json;
     json << "{\"topics\": {";
     bool first_topic = true;
@@ -196,7 +196,7 @@ TEST(McapNode, OfficialReaderDecodesEveryMessageLikeGdnavsReader) {
         ASSERT_EQ(tr.entries.size(), 3001u) << topic;
         const fields::TypeFields* table = fields::find_type_fields(tr.ops->type_name);
         ASSERT_NE(table, nullptr) << tr.ops->type_name;
-        gdnav::recorder::SampleDecoder dec(*tr.ops);
+        gdnav::io::recording::SampleDecoder dec(*tr.ops);
         std::unique_ptr<void, void (*)(void*)> s(tr.ops->create(), tr.ops->destroy);
         json << (first_topic ? "" : ", ") << json_string(topic) << ": {\"type\": " << json_string(tr.ops->type_name)
              << ", \"count\": " << tr.entries.size() << ", \"samples\": {";
@@ -235,7 +235,7 @@ TEST(McapNode, OfficialReaderDecodesEveryMessageLikeGdnavsReader) {
 // mcap_node/check_viewer.mjs, with the raw topics of the same file and with the run's run.h5 /error rows (the
 // nav_recorder's errors, written here as EXPECTED.json). gdnav's own reader skips the viewer channels.
 TEST(McapNode, ViewerChannelsDecodeAndMatchTruthEstimatesAndRunH5) {
-    gdnav::runtime::register_gdnav_topics();
+    gdnav::framework::register_gdnav_topics();
     const fs::path out = temp_dir("mcap-viewer");
     constexpr std::uint64_t kSteps = 16001;  // t = -50 .. 110 s
     const Result r = run({GDNAV_GDNAV_EXE, "run", "--scenario", "paper2", "--seed", "1", "--steps", std::to_string(kSteps),
@@ -244,7 +244,7 @@ TEST(McapNode, ViewerChannelsDecodeAndMatchTruthEstimatesAndRunH5) {
                          240.0);
     ASSERT_EQ(r.exit_code, 0) << r.output;
 
-    const gdnav::recorder::Recording rec = gdnav::recorder::read_recording(out / "record");
+    const gdnav::io::recording::Recording rec = gdnav::io::recording::read_recording(out / "record");
     ASSERT_TRUE(rec.complete) << rec.problem;
     EXPECT_EQ(rec.topics.size(), 3u);
     EXPECT_EQ(rec.derived_channels.size(), 7u);

@@ -22,7 +22,7 @@ namespace {
 }
 
 TEST(Mcap, RecorderKilledMidRunLeavesEverythingBeforeTheCutReadable) {
-    gdnav::runtime::register_gdnav_topics();
+    gdnav::framework::register_gdnav_topics();
     const fs::path out = temp_dir("mcap-killed");
     // Scenario #2 paced at 10x real time (6001 steps: about 6 s), the recorder in its own process writing 1 MiB
     // chunks (one every ~950 steps with these six topics).
@@ -45,7 +45,7 @@ TEST(Mcap, RecorderKilledMidRunLeavesEverythingBeforeTheCutReadable) {
     ASSERT_EQ(wait_for(launcher, 120.0), 0) << read_file(out / "log.txt");  // the recorder is not essential
     EXPECT_FALSE(fs::exists(out / "record" / "digest.yaml"));
 
-    const gdnav::recorder::Recording cut = gdnav::recorder::read_recording(out / "record");
+    const gdnav::io::recording::Recording cut = gdnav::io::recording::read_recording(out / "record");
     EXPECT_FALSE(cut.complete);
     EXPECT_NE(cut.problem.find("at byte"), std::string::npos) << cut.problem;
     std::printf("killed recording: %s (%ju bytes); %s\n", file.string().c_str(),
@@ -67,7 +67,7 @@ TEST(Mcap, RecorderKilledMidRunLeavesEverythingBeforeTheCutReadable) {
     Result r = run({kExe, "run", "--scenario", "paper2", "--seed", "1", "--steps", std::to_string(last + 1), "--layout",
                     "direct", "--record", "default,Truth", "--out", ref.string()});
     ASSERT_EQ(r.exit_code, 0) << r.output;
-    const gdnav::recorder::Recording whole = gdnav::recorder::read_recording(ref / "record");
+    const gdnav::io::recording::Recording whole = gdnav::io::recording::read_recording(ref / "record");
     ASSERT_TRUE(whole.complete) << whole.problem;
     for (const auto& [topic, tr] : whole.topics) {
         const auto& c = cut.topics.at(topic);

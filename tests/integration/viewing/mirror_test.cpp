@@ -31,7 +31,8 @@
 #include "framework/topic_types.hpp"
 
 using namespace gdnav::testing;
-namespace rt = gdnav::runtime;
+namespace msg = gdnav::msg;
+namespace framework = gdnav::framework;
 using namespace eprosima::fastdds::dds;
 
 namespace {
@@ -63,7 +64,7 @@ struct Discovered final : DomainParticipantListener {
 };
 
 // Takes every valid sample of `r` into by_step (serialised bytes by step).
-void drain(DataReader& r, const rt::MessageOps& ops, void* sample,
+void drain(DataReader& r, const msg::MessageOps& ops, void* sample,
            std::map<std::uint64_t, std::vector<std::uint8_t>>& by_step, int& repeated) {
     SampleInfo info;
     while (r.take_next_sample(sample, &info) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) {
@@ -80,15 +81,15 @@ void drain(DataReader& r, const rt::MessageOps& ops, void* sample,
 TEST(Mirror, TheLiveBridgeReadsOnlyMirrorsAndAMirrorIsEveryTenthStepOfItsTopicBitForBit) {
     constexpr int kDomain = 152;  // integration tests run one at a time (RUN_SERIAL)
     constexpr std::uint64_t kSteps = 2000;
-    rt::register_gdnav_topics();
-    const rt::MessageOps* ops = rt::find_topic(gdnav::topics::kImu);
+    framework::register_gdnav_topics();
+    const msg::MessageOps* ops = framework::find_topic(gdnav::topics::kImu);
     ASSERT_NE(ops, nullptr);
     Discovered discovered;  // outlives the participant
-    rt::DdsContext dds(kDomain, rt::config_dir() / "dds" / "gdnav_profiles.xml", "gdnav.test.mirror");
+    gdnav::dds::DdsContext dds(kDomain, framework::config_dir() / "dds" / "gdnav_profiles.xml", "gdnav.test.mirror");
     ASSERT_EQ(dds.participant()->set_listener(&discovered), eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK);
     // The test reads outside the lockstep, so its readers keep the whole run (outside_reader.hpp).
     const auto depth = static_cast<std::int32_t>(kSteps) + 16;
-    DataReader* mirror = whole_run_reader(dds, rt::mirror_topic(gdnav::topics::kImu), *ops, depth);
+    DataReader* mirror = whole_run_reader(dds, gdnav::dds::mirror_topic(gdnav::topics::kImu), *ops, depth);
     DataReader* topic = whole_run_reader(dds, gdnav::topics::kImu, *ops, depth);
     ASSERT_NE(mirror, nullptr);
     ASSERT_NE(topic, nullptr);
@@ -124,10 +125,10 @@ TEST(Mirror, TheLiveBridgeReadsOnlyMirrorsAndAMirrorIsEveryTenthStepOfItsTopicBi
     for (const auto& t : bridge) {
         std::printf("live bridge reads %s\n", t.c_str());
         if (t == gdnav::topics::kTick || t == gdnav::topics::kRunControl || t == gdnav::topics::kStatus) continue;
-        EXPECT_EQ(rt::find_topic(t), nullptr) << "the bridge reads the topic " << t << " itself, not its mirror";
+        EXPECT_EQ(framework::find_topic(t), nullptr) << "the bridge reads the topic " << t << " itself, not its mirror";
     }
-    for (const auto& t : rt::known_topics()) mirrors += bridge.count(rt::mirror_topic(t));
-    EXPECT_EQ(mirrors, rt::known_topics().size()) << "the bridge reads every data topic from its mirror";
+    for (const auto& t : framework::known_topics()) mirrors += bridge.count(gdnav::dds::mirror_topic(t));
+    EXPECT_EQ(mirrors, framework::known_topics().size()) << "the bridge reads every data topic from its mirror";
 
     // The mirror: every 10th step from its first sample on (it matched before step 0), bit for bit the topic's.
     ASSERT_FALSE(from_mirror.empty());
@@ -136,22 +137,23 @@ TEST(Mirror, TheLiveBridgeReadsOnlyMirrorsAndAMirrorIsEveryTenthStepOfItsTopicBi
     EXPECT_EQ(expect, 0u);
     for (const auto& [step, bytes] : from_mirror) {
         ASSERT_EQ(step, expect) << "a step is missing, or a step that is not a multiple of 10";
-        expect += rt::kMirrorStride;
+        expect += gdnav::dds::kMirrorStride;
         auto it = from_topic.find(step);
         ASSERT_NE(it, from_topic.end()) << "step " << step << " not read from the topic itself";
         EXPECT_EQ(bytes, it->second) << "step " << step;
     }
-    EXPECT_EQ(from_mirror.rbegin()->first, kSteps - rt::kMirrorStride);
+    EXPECT_EQ(from_mirror.rbegin()->first, kSteps - gdnav::dds::kMirrorStride);
     EXPECT_EQ(from_topic.size(), kSteps);
     std::printf("mirror of %s: %zu samples (steps 0..%llu every %llu), each equal to the topic's; %zu from the topic\n",
                 gdnav::topics::kImu, from_mirror.size(), static_cast<unsigned long long>(from_mirror.rbegin()->first),
-                static_cast<unsigned long long>(rt::kMirrorStride), from_topic.size());
+                static_cast<unsigned long long>(gdnav::dds::kMirrorStride), from_topic.size());
 }
 
 TEST(Mirror, AnInputWrittenByAnExternalMemberIsReadFromTheTopicItself) {
     constexpr int kDomain = 153;
     Discovered discovered;
-    rt::DdsContext dds(kDomain, rt::config_dir() / "dds" / "gdnav_profiles.xml", "gdnav.test.mirror-external");
+    gdnav::dds::DdsContext dds(kDomain, framework::config_dir() / "dds" / "gdnav_profiles.xml",
+                               "gdnav.test.mirror-external");
     ASSERT_EQ(dds.participant()->set_listener(&discovered), eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK);
     const auto out = temp_dir("mirror-external");
     const int port = free_port();
@@ -166,12 +168,12 @@ TEST(Mirror, AnInputWrittenByAnExternalMemberIsReadFromTheTopicItself) {
     ASSERT_EQ(p.run_code, 0) << p.run_log << "\n--- member:\n" << p.member_log;
     const std::set<std::string> bridge = discovered.readers_named("gdnav.live");
     ASSERT_FALSE(bridge.empty()) << "the live bridge's participant was not discovered";
-    for (const auto& t : rt::known_topics()) {
+    for (const auto& t : framework::known_topics()) {
         if (t == std::string(gdnav::topics::kControls)) {
             EXPECT_TRUE(bridge.count(t)) << "the external member's topic is not read from the topic itself";
-            EXPECT_FALSE(bridge.count(rt::mirror_topic(t))) << "nobody writes the mirror of " << t;
+            EXPECT_FALSE(bridge.count(gdnav::dds::mirror_topic(t))) << "nobody writes the mirror of " << t;
         } else {
-            EXPECT_TRUE(bridge.count(rt::mirror_topic(t))) << t << " is not read from its mirror";
+            EXPECT_TRUE(bridge.count(gdnav::dds::mirror_topic(t))) << t << " is not read from its mirror";
             EXPECT_FALSE(bridge.count(t)) << t << " is read from the topic itself";
         }
     }

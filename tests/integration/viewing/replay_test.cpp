@@ -87,20 +87,20 @@ void expect_config_error(const Result& r, const std::vector<std::string>& needle
 
 // Adds `topic` of the recording in `from` to the recording in `to` (rewritten: same grid, same samples).
 void add_topic(const fs::path& from, const std::string& topic, const fs::path& to) {
-    gdnav::runtime::register_gdnav_topics();
-    gdnav::recorder::Recording a = gdnav::recorder::read_recording(to);
-    const gdnav::recorder::TopicRecord extra = gdnav::recorder::read_topic_record(from, topic);
+    gdnav::framework::register_gdnav_topics();
+    gdnav::io::recording::Recording a = gdnav::io::recording::read_recording(to);
+    const gdnav::io::recording::TopicRecord extra = gdnav::io::recording::read_topic_record(from, topic);
     a.topics[topic] = extra;
     std::vector<std::string> topics;
     for (const auto& [t, _] : a.topics) topics.push_back(t);
-    gdnav::recorder::RecordingOptions o;
+    gdnav::io::recording::RecordingOptions o;
     o.t0_s = std::stod(a.run_metadata.at("t0_s"));
     o.dt_s = std::stod(a.run_metadata.at("dt_s"));
     o.run_metadata = a.run_metadata;
-    gdnav::recorder::RecordingWriter w(to, topics, o);
+    gdnav::io::recording::RecordingWriter w(to, topics, o);
     for (std::size_t i = 0; i < topics.size(); ++i) {
         const auto& r = a.topics.at(topics[i]);
-        gdnav::recorder::SampleDecoder dec(*r.ops);
+        gdnav::io::recording::SampleDecoder dec(*r.ops);
         std::unique_ptr<void, void (*)(void*)> s(r.ops->create(), r.ops->destroy);
         for (const auto& e : r.entries) {
             ASSERT_TRUE(dec.decode(&r.bytes[e.offset], e.size, s.get()));
@@ -112,11 +112,12 @@ void add_topic(const fs::path& from, const std::string& topic, const fs::path& t
 
 // An MCAP file as another tool writes it: gdnav's ImuSample channel (copied from `from`) and a camera channel.
 void write_foreign_mcap(const fs::path& from, const fs::path& to) {
-    gdnav::runtime::register_gdnav_topics();
-    const gdnav::recorder::TopicRecord imu = gdnav::recorder::read_topic_record(from, "gdnav/ImuSample");
+    gdnav::framework::register_gdnav_topics();
+    const gdnav::io::recording::TopicRecord imu = gdnav::io::recording::read_topic_record(from, "gdnav/ImuSample");
     fs::create_directories(to);
-    gdnav::mcap::Writer w(to / "run.mcap", {"ros2", "another tool", "zstd", 3, 1u << 20});
-    const auto s_imu = w.add_schema("gdnav::msg::ImuSample", "omgidl", std::string(gdnav::runtime::topic_schema_idl("gdnav/ImuSample")));
+    gdnav::io::mcap::Writer w(to / "run.mcap", {"ros2", "another tool", "zstd", 3, 1u << 20});
+    const auto s_imu = w.add_schema("gdnav::msg::ImuSample", "omgidl",
+                                    std::string(gdnav::framework::topic_schema_idl("gdnav/ImuSample")));
     const auto c_imu = w.add_channel(s_imu, "gdnav/ImuSample", "cdr");
     const auto s_cam = w.add_schema("sensor_msgs/msg/Image", "ros2msg", "std_msgs/Header header\nuint32 height\n");
     const auto c_cam = w.add_channel(s_cam, "/camera/image", "cdr");

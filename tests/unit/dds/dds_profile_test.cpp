@@ -16,7 +16,9 @@
 #include "msgs/messages.hpp"
 #include "framework/run_config.hpp"
 
-using namespace gdnav::runtime;
+using namespace gdnav::msg;
+using namespace gdnav::framework;
+using namespace gdnav::dds;
 using namespace eprosima::fastdds::dds;
 
 TEST(DdsProfile, DefaultProfileUsesUdpOnlyWithoutSharedMemory) {
@@ -105,6 +107,6 @@ TEST(DdsProfile, TheParticipantLeaseOutlastsTheLongestMemberTimeout) {
         const double lease_s = d.leaseDuration.seconds + 1e-9 * d.leaseDuration.nanosec;
         const double announce_s = d.leaseDuration_announcementperiod.seconds +
                                   1e-9 * d.leaseDuration_announcementperiod.nanosec;
-        EXPECT_GT(lease_s, gdnav::runtime::kMemberTimeoutMax_s + 2.0 * announce_s) << lease_s << " s";
+        EXPECT_GT(lease_s, gdnav::framework::kMemberTimeoutMax_s + 2.0 * announce_s) << lease_s << " s";
     }
 }

@@ -1,4 +1,4 @@
-// An observer's lost-step rule (dds/host/host_observers.hpp, host::step_missed): a step is given up only when an
+// An observer's lost-step rule (dds/host/host_observers.hpp, dds::host::step_missed): a step is given up only when an
 // input it reads has no sample of that step while a newer sample of the same input has arrived (one writer's samples
 // arrive in order). Inboxes filled by hand, no DDS.
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include "dds/host/host_observers.hpp"
 
 using namespace gdnav;
-using namespace gdnav::runtime;
+using namespace gdnav::framework;
 
 namespace {
 
@@ -26,13 +26,13 @@ struct Inboxes {
         l.observer = true;
         l.inputs = {&a, &b};
     }
-    static void put(host::Channel& ch, std::uint64_t s) {  // as host::Inputs::read files a sample
+    static void put(gdnav::dds::host::Channel& ch, std::uint64_t s) {  // as dds::host::Inputs::read files a sample
         ch.saw(s);
         ch.file_taken(s % kInboxRing, s, true);
     }
     Watcher w;
-    host::Channel a, b;
-    host::Local l;
+    gdnav::dds::host::Channel a, b;
+    gdnav::dds::host::Local l;
 };
 
 }  // namespace
@@ -40,32 +40,32 @@ struct Inboxes {
 TEST(ObserverInbox, AStepStillInFlightIsWaitedForAndALostOneIsGivenUp) {
     Inboxes in(Lag::Same);
     Inboxes::put(in.a, 5);
-    EXPECT_FALSE(host::step_missed(in.l, 5));  // b's sample of step 5 may still come
-    Inboxes::put(in.b, 6);                     // b's writer is past 5: its sample of step 5 was lost
-    EXPECT_TRUE(host::step_missed(in.l, 5));
+    EXPECT_FALSE(gdnav::dds::host::step_missed(in.l, 5));  // b's sample of step 5 may still come
+    Inboxes::put(in.b, 6);                                 // b's writer is past 5: its sample of step 5 was lost
+    EXPECT_TRUE(gdnav::dds::host::step_missed(in.l, 5));
     Inboxes::put(in.a, 6);
-    EXPECT_FALSE(host::step_missed(in.l, 6));  // both here
-    EXPECT_FALSE(host::step_missed(in.l, 7));  // nothing newer than 6 anywhere: wait
+    EXPECT_FALSE(gdnav::dds::host::step_missed(in.l, 6));  // both here
+    EXPECT_FALSE(gdnav::dds::host::step_missed(in.l, 7));  // nothing newer than 6 anywhere: wait
 }
 
 TEST(ObserverInbox, LagStrideAndLostInputsAreRespected) {
     Inboxes in(Lag::Previous);  // a is read at k - 1
     Inboxes::put(in.a, 9);
     Inboxes::put(in.b, 10);
-    EXPECT_FALSE(host::step_missed(in.l, 10));  // a of step 9 and b of step 10: step 10 is complete
+    EXPECT_FALSE(gdnav::dds::host::step_missed(in.l, 10));  // a of step 9 and b of step 10: step 10 is complete
     Inboxes::put(in.a, 11);
-    EXPECT_TRUE(host::step_missed(in.l, 11));   // a of step 10 is missing and a of step 11 has arrived
+    EXPECT_TRUE(gdnav::dds::host::step_missed(in.l, 11));  // a of step 10 is missing and a of step 11 has arrived
 
     Inboxes st(Lag::Same);
     st.w.a_.set_stride(10);
     st.w.b_.set_stride(10);
     Inboxes::put(st.a, 20);
     Inboxes::put(st.b, 20);
-    EXPECT_FALSE(host::step_missed(st.l, 15));  // not a step the strided inputs read: nothing is missing
-    EXPECT_TRUE(host::step_missed(st.l, 10));   // step 10 never came, step 20 did
+    EXPECT_FALSE(gdnav::dds::host::step_missed(st.l, 15));  // not a step the strided inputs read: nothing is missing
+    EXPECT_TRUE(gdnav::dds::host::step_missed(st.l, 10));  // step 10 never came, step 20 did
 
     Inboxes lost(Lag::Same);
     Inboxes::put(lost.a, 3);
     lost.b.mark_lost();  // its producer was declared dead: not waited for, not missing
-    EXPECT_FALSE(host::step_missed(lost.l, 3));
+    EXPECT_FALSE(gdnav::dds::host::step_missed(lost.l, 3));
 }

@@ -29,7 +29,7 @@ TEST(ProcessExit, ATearDownThatHangsEndsWithTheRunsExitCode) {
     // The "tear-down" waits far longer than the bound (a deadlock stands in for it); the bound ends the process with
     // the code it was given, not the 99 the child would end with after the wait.
     EXPECT_EQ(child_exit_code([] {
-                  gdnav::runtime::bound_teardown(7, 0.2);
+                  gdnav::dds::bound_teardown(7, 0.2);
                   std::this_thread::sleep_for(std::chrono::seconds(30));
               }),
               7);
@@ -37,7 +37,7 @@ TEST(ProcessExit, ATearDownThatHangsEndsWithTheRunsExitCode) {
 
 TEST(ProcessExit, ATearDownWithinTheBoundEndsAsItWould) {
     EXPECT_EQ(child_exit_code([] {
-                  gdnav::runtime::bound_teardown(7, 30.0);
+                  gdnav::dds::bound_teardown(7, 30.0);
                   std::this_thread::sleep_for(std::chrono::milliseconds(10));
               }),
               99);

@@ -11,8 +11,8 @@
 
 #include "dds/process/process_priority.hpp"
 
-using gdnav::runtime::lower_cpu_priority;
-using gdnav::runtime::thread_nice;
+using gdnav::dds::lower_cpu_priority;
+using gdnav::dds::thread_nice;
 
 namespace {
 
@@ -66,7 +66,7 @@ TEST(ProcessPriority, TheKeptThreadKeepsItsValue) {
                   std::atomic<int> kept_tid{0};
                   std::atomic<int> kept_nice{-1};
                   std::thread kept([&] {
-                      kept_tid = gdnav::runtime::current_tid();
+                      kept_tid = gdnav::dds::current_tid();
                       while (!stop) std::this_thread::sleep_for(std::chrono::milliseconds(1));
                       kept_nice = thread_nice();
                   });

@@ -12,7 +12,8 @@
 #include "dds/host/warn_limit.hpp"
 #include "framework/run_config.hpp"
 
-using namespace gdnav::runtime;
+using namespace gdnav::framework;
+using namespace gdnav::dds;
 
 namespace {
 

@@ -3,7 +3,7 @@
 
 #include "launch/shm_cleanup.hpp"
 
-using namespace gdnav::runtime;
+using namespace gdnav::launch;
 
 TEST(Shm, OnlyFastDdsNamesAreCandidates) {
     EXPECT_TRUE(is_fastdds_shm_name("fastrtps_0a1b2c3d4e5f6a7b"));

@@ -16,7 +16,7 @@
 #include "framework/run_config.hpp"
 #include "dds/filters/status_filter.hpp"
 
-namespace rt = gdnav::runtime;
+namespace framework = gdnav::framework;
 namespace msg = gdnav::msg;
 using namespace eprosima::fastdds::dds;
 
@@ -30,7 +30,7 @@ std::vector<std::uint8_t> status_cdr(const std::string& member) {
     s.host("h:1");
     s.message("some text after the name");
     std::vector<std::uint8_t> cdr;
-    rt::message_ops<msg::ComponentStatus>().serialize(&s, cdr);
+    msg::message_ops<msg::ComponentStatus>().serialize(&s, cdr);
     return cdr;
 }
 }  // namespace
@@ -39,27 +39,28 @@ TEST(StatusFilter, ReadsTheMemberNameOfASerialisedStatus) {
     for (const std::string& name : std::vector<std::string>{"clock", "nav_att", "a", std::string(63, 'm')}) {
         const auto cdr = status_cdr(name);
         std::string_view m;
-        ASSERT_TRUE(rt::status_member_of_cdr(cdr.data(), static_cast<std::uint32_t>(cdr.size()), m)) << name;
+        ASSERT_TRUE(gdnav::dds::status_member_of_cdr(cdr.data(), static_cast<std::uint32_t>(cdr.size()), m)) << name;
         EXPECT_EQ(m, name);
     }
     const auto cdr = status_cdr("nav_pos");
     std::string_view m;
-    EXPECT_FALSE(rt::status_member_of_cdr(cdr.data(), 4 + 24 + 4 + 3, m));  // name cut short
-    EXPECT_FALSE(rt::status_member_of_cdr(cdr.data(), 20, m));
-    EXPECT_FALSE(rt::status_member_of_cdr(nullptr, 0, m));
+    EXPECT_FALSE(gdnav::dds::status_member_of_cdr(cdr.data(), 4 + 24 + 4 + 3, m));  // name cut short
+    EXPECT_FALSE(gdnav::dds::status_member_of_cdr(cdr.data(), 20, m));
+    EXPECT_FALSE(gdnav::dds::status_member_of_cdr(nullptr, 0, m));
 }
 
 TEST(StatusFilter, AFilteredStatusReaderGetsOnlyItsMemberOverDds) {
     // Another run may share the domain: this test's statuses carry a run id of their own and only those count.
     const int domain = 152 + static_cast<int>(getpid() % 40);
     const std::uint64_t run_id = 1000000 + static_cast<std::uint64_t>(getpid());
-    const auto profile = rt::config_dir() / "dds" / "gdnav_profiles.xml";
-    rt::DdsContext writer_side(domain, profile, "gdnav.test.status_writer");
-    rt::DdsContext reader_side(domain, profile, "gdnav.test.status_reader");
-    const auto& ops = rt::message_ops<msg::ComponentStatus>();
-    DataWriter* w = writer_side.writer(gdnav::topics::kStatus, ops, rt::kControlWriterProfile);
-    DataReader* only_clock = reader_side.status_reader(gdnav::topics::kStatus, ops, rt::kControlReaderProfile, "clock");
-    DataReader* all = reader_side.reader(gdnav::topics::kStatus, ops, rt::kControlReaderProfile);
+    const auto profile = framework::config_dir() / "dds" / "gdnav_profiles.xml";
+    gdnav::dds::DdsContext writer_side(domain, profile, "gdnav.test.status_writer");
+    gdnav::dds::DdsContext reader_side(domain, profile, "gdnav.test.status_reader");
+    const auto& ops = msg::message_ops<msg::ComponentStatus>();
+    DataWriter* w = writer_side.writer(gdnav::topics::kStatus, ops, gdnav::dds::kControlWriterProfile);
+    DataReader* only_clock =
+        reader_side.status_reader(gdnav::topics::kStatus, ops, gdnav::dds::kControlReaderProfile, "clock");
+    DataReader* all = reader_side.reader(gdnav::topics::kStatus, ops, gdnav::dds::kControlReaderProfile);
     for (int i = 0; i < 200; ++i) {  // wait for both matches (at most 10 s)
         PublicationMatchedStatus st;
         w->get_publication_matched_status(st);

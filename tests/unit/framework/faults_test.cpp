@@ -14,15 +14,15 @@
 #include "framework/topic_types.hpp"
 
 using namespace gdnav;
-using runtime::faults::FaultSchedule;
-using runtime::faults::InputFaults;
-using runtime::faults::Kind;
-using runtime::faults::MemberPorts;
+using framework::faults::FaultSchedule;
+using framework::faults::InputFaults;
+using framework::faults::Kind;
+using framework::faults::MemberPorts;
 
 namespace {
 
-runtime::RunInfo run_info() {
-    runtime::RunInfo r;
+framework::RunInfo run_info() {
+    framework::RunInfo r;
     r.seed = 7;
     r.run_index = 3;
     r.steps = 1000;
@@ -67,7 +67,7 @@ struct Consumer {
     InputFaults faults;
     explicit Consumer(const std::string& yaml)
         : schedule(parse(yaml)),
-          faults(schedule, "gdnav/AirSample", {"sensors_air"}, runtime::message_ops<msg::AirSample>(), run_info()) {}
+          faults(schedule, "gdnav/AirSample", {"sensors_air"}, msg::message_ops<msg::AirSample>(), run_info()) {}
     // What the consumer sees at step k when the producer published tas = k.
     const msg::AirSample* at(std::uint64_t k) {
         static msg::AirSample published;
@@ -79,7 +79,7 @@ struct Consumer {
 }  // namespace
 
 TEST(FaultSchedule, TimesBecomeStepsAndKillsEndAtTheirRestart) {
-    runtime::register_gdnav_topics();
+    framework::register_gdnav_topics();
     const FaultSchedule s = parse(
         "faults:\n"
         "  - {at_s: 0, until_s: 0.5, target: sensors_air, kind: drop}\n"
@@ -100,7 +100,7 @@ TEST(FaultSchedule, TimesBecomeStepsAndKillsEndAtTheirRestart) {
 }
 
 TEST(FaultSchedule, BadEntriesGiveOneLineNamingTheKey) {
-    runtime::register_gdnav_topics();
+    framework::register_gdnav_topics();
     const std::vector<std::pair<std::string, std::string>> cases{
         {"faults: [{at_s: 1, target: sensors_air, kind: melt}]", "key 'faults[0].kind'"},
         {"faults: [{at_s: .nan, target: sensors_air, kind: drop}]", "key 'faults[0].at_s'"},
@@ -132,7 +132,7 @@ TEST(FaultSchedule, BadEntriesGiveOneLineNamingTheKey) {
 }
 
 TEST(InputFaults, EachKindDeliversWhatItsDocumentationSays) {
-    runtime::register_gdnav_topics();
+    framework::register_gdnav_topics();
     // t = -1 + 0.01 k: at_s 0 is step 100.
     {
         Consumer c("faults: [{at_s: 0, until_s: 0.05, target: sensors_air, kind: drop}]");
@@ -183,7 +183,7 @@ TEST(InputFaults, EachKindDeliversWhatItsDocumentationSays) {
 }
 
 TEST(InputFaults, LossAndNoiseAreTheSameForEveryConsumerAndFollowTheirLaw) {
-    runtime::register_gdnav_topics();
+    framework::register_gdnav_topics();
     const std::string yaml =
         "faults:\n"
         "  - {at_s: 0, until_s: 40, target: sensors_air, kind: loss, p: 0.3}\n"
@@ -214,9 +214,9 @@ TEST(InputFaults, LossAndNoiseAreTheSameForEveryConsumerAndFollowTheirLaw) {
     EXPECT_NEAR(sd, 2.0, 0.1);
     std::printf("loss p=0.3: %d of 4000 dropped; noise sigma 2: mean %.3f, sd %.3f over %d samples\n", lost, mean, sd, n);
     // Another run of the batch draws its own losses.
-    runtime::RunInfo other = run_info();
+    framework::RunInfo other = run_info();
     other.run_index = 4;
-    InputFaults c(a.schedule, "gdnav/AirSample", {"sensors_air"}, runtime::message_ops<msg::AirSample>(), other);
+    InputFaults c(a.schedule, "gdnav/AirSample", {"sensors_air"}, msg::message_ops<msg::AirSample>(), other);
     Consumer d(yaml);
     int differ = 0;
     for (std::uint64_t k = 100; k < 1100; ++k) {
@@ -238,9 +238,9 @@ TEST(FaultSchedule, AFaultsFileReplacesTheListAndNamesItselfInErrors) {
         std::ofstream f(file);
         f << "faults: [{at_s: 0.2, until_s: 0.3, target: a, kind: freeze}]\n";
     }
-    runtime::RunOverrides o;
+    framework::RunOverrides o;
     o.faults_file = file;
-    const auto rc = runtime::RunConfig::parse(run_yaml, "r.yaml", o);
+    const auto rc = framework::RunConfig::parse(run_yaml, "r.yaml", o);
     ASSERT_EQ(rc.faults.faults().size(), 1u);
     EXPECT_EQ(rc.faults.faults()[0].kind, Kind::Freeze);
     EXPECT_EQ(rc.faults.faults()[0].from_step, 20u);
@@ -249,7 +249,7 @@ TEST(FaultSchedule, AFaultsFileReplacesTheListAndNamesItselfInErrors) {
         f << "faults: [{at_s: 0.2, target: a, kind: melt}]\n";
     }
     try {
-        (void)runtime::RunConfig::parse(run_yaml, "r.yaml", o);
+        (void)framework::RunConfig::parse(run_yaml, "r.yaml", o);
         ADD_FAILURE() << "a bad kind in the faults file was accepted";
     } catch (const config::ConfigError& e) {
         EXPECT_NE(std::string(e.what()).find(file.string() + ": key 'faults[0].kind'"), std::string::npos) << e.what();

@@ -7,8 +7,8 @@
 #include "probe_chain.hpp"
 
 using namespace gdnav;
-using namespace gdnav::runtime;
-using namespace gdnav::runtime::test;
+using namespace gdnav::framework;
+using namespace gdnav::framework::test;
 
 TEST(Graph, StepOrderFollowsZeroLagEdgesWhateverTheInputOrder) {
     ComponentRegistry reg;

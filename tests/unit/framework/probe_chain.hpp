@@ -7,7 +7,7 @@
 #include "chain_components.hpp"
 #include "framework/component.hpp"
 
-namespace gdnav::runtime::test {
+namespace gdnav::framework::test {
 
 // A probe that records what it saw on its inputs.
 class Source final : public Component {
@@ -36,4 +36,4 @@ components:
   chain_controller: {type: chain_controller, kp: 1.0, kd: 1.5, target_m: 0.0}
 )";
 
-}  // namespace gdnav::runtime::test
+}  // namespace gdnav::framework::test

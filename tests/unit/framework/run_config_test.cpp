@@ -5,8 +5,8 @@
 #include "probe_chain.hpp"
 
 using namespace gdnav;
-using namespace gdnav::runtime;
-using namespace gdnav::runtime::test;
+using namespace gdnav::framework;
+using namespace gdnav::framework::test;
 
 TEST(RunConfig, OverridesAndDefaults) {
     RunOverrides o;

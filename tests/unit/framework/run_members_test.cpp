@@ -8,7 +8,7 @@
 #include "framework/run_members.hpp"
 
 using namespace gdnav;
-using namespace gdnav::runtime;
+using namespace gdnav::framework;
 
 namespace {
 

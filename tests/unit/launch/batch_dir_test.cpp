@@ -5,7 +5,7 @@
 #include "config/config.hpp"
 #include "temp_dir.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch::batch {
 namespace {
 
 TEST(BatchDir, ParseShardAcceptsIOfN) {
@@ -82,4 +82,4 @@ TEST(BatchDir, ReadBatchDirWithoutBatchYamlHasNoRange) {
 }
 
 }  // namespace
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::batch

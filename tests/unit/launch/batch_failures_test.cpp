@@ -11,7 +11,7 @@
 #include "launch/batch/batch_dir.hpp"
 #include "temp_dir.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch::batch {
 namespace {
 
 namespace fs = std::filesystem;
@@ -62,4 +62,4 @@ TEST(BatchFailures, ARecordedFailureIsSummarisedAndItsMetricsMovedAside) {
 }
 
 }  // namespace
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::batch

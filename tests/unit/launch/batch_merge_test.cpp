@@ -7,7 +7,7 @@
 #include "temp_dir.hpp"
 #include "metrics/run_record.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch::batch {
 namespace {
 
 namespace fs = std::filesystem;
@@ -107,4 +107,4 @@ TEST(BatchMerge, DirectoryWithoutRunsIsAnError) {
 }
 
 }  // namespace
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::batch

@@ -7,7 +7,7 @@
 
 #include "temp_dir.hpp"
 
-using gdnav::runtime::DomainLock;
+using gdnav::launch::DomainLock;
 
 TEST(DomainLock, AHeldDomainIsSkippedAndFreeAgainOnceReleased) {
     const gdnav::test::TempDir dir;

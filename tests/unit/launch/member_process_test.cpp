@@ -10,20 +10,21 @@
 
 #include "temp_dir.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::launch {
 namespace {
 
 namespace fs = std::filesystem;
 
-RunConfig config_with(const std::string& members, int domain = 164) {
-    RunConfig rc = RunConfig::parse("run: {seed: 1, steps: 10, run_index: 4, out_dir: /tmp/o, members: " + members +
+framework::RunConfig config_with(const std::string& members, int domain = 164) {
+    framework::RunConfig rc =
+        framework::RunConfig::parse("run: {seed: 1, steps: 10, run_index: 4, out_dir: /tmp/o, members: " + members +
                                         "}\ncomponents: {nav: {type: y}}\n",
                                     "t.yaml");
     rc.domain_id = domain;  // as the launcher's choose_domain sets it
     return rc;
 }
 
-std::string error_of(const RunConfig& rc) {
+std::string error_of(const framework::RunConfig& rc) {
     try {
         (void)resolve_member_processes(rc);
     } catch (const config::ConfigError& e) {
@@ -41,7 +42,7 @@ TEST(Sha256, KnownDigestOfAbc) {
 }
 
 TEST(MemberProcess, PlaceholdersEnvironmentAndTheExecutableOnPath) {
-    const RunConfig rc = config_with("{nav: {command: [sh, -c, 'echo {domain} {run} {out}', '{security}'], "
+    const framework::RunConfig rc = config_with("{nav: {command: [sh, -c, 'echo {domain} {run} {out}', '{security}'], "
                                      "env: {MY: 'r{run}'}}}");
     const auto ps = resolve_member_processes(rc);
     ASSERT_EQ(ps.size(), 1u);
@@ -68,8 +69,8 @@ TEST(MemberProcess, PlaceholdersEnvironmentAndTheExecutableOnPath) {
 TEST(MemberProcess, AnInterpretersScriptIsTheFileHashedAndRecorded) {
     gdnav::test::TempDir dir;
     std::ofstream(dir.path() / "f.py") << "print('member')\n";
-    const RunConfig rc = config_with("{nav: {command: [python3, -u, f.py, --x-k, '1'], cwd: '" + dir.path().string() +
-                                     "'}}");
+    const framework::RunConfig rc =
+        config_with("{nav: {command: [python3, -u, f.py, --x-k, '1'], cwd: '" + dir.path().string() + "'}}");
     const auto ps = resolve_member_processes(rc);
     ASSERT_EQ(ps.size(), 1u);
     EXPECT_EQ(ps[0].file, dir.path() / "f.py");
@@ -104,7 +105,7 @@ TEST(MemberProcess, MissingCommandOrDirectoryIsOneLineNamingTheKey) {
 }
 
 TEST(MemberProcess, DirectLayoutAndInProcessPythonAreRefused) {
-    const RunConfig rc = config_with("{nav: {command: [sh]}}");
+    const framework::RunConfig rc = config_with("{nav: {command: [sh]}}");
     EXPECT_NO_THROW(check_started_members(rc, "composed"));
     EXPECT_NO_THROW(check_started_members(rc, "distributed"));
     try {
@@ -116,11 +117,11 @@ TEST(MemberProcess, DirectLayoutAndInProcessPythonAreRefused) {
             << e.what();
     }
     // An in-process Python member is a component of the run (framework/run_members.hpp), not a process.
-    const RunConfig py = config_with("{nav: {python: {file: f.py, class: C}}}");
+    const framework::RunConfig py = config_with("{nav: {python: {file: f.py, class: C}}}");
     EXPECT_NO_THROW(check_started_members(py, "direct"));
-    EXPECT_TRUE(started_members(py).empty());
+    EXPECT_TRUE(framework::started_members(py).empty());
     EXPECT_TRUE(resolve_member_processes(py).empty());
 }
 
 }  // namespace
-}  // namespace gdnav::runtime
+}  // namespace gdnav::launch

@@ -11,7 +11,7 @@
 #include "temp_dir.hpp"
 #include "paper_scenarios.hpp"
 
-namespace gdnav::runtime::deploy {
+namespace gdnav::launch::deploy {
 namespace {
 
 namespace fs = std::filesystem;
@@ -55,11 +55,11 @@ protected:
         req.out = dir_.path() / ("out_" + host);
         req.steps = 50;
         req.log_level = "warn";
-        return plan_host_run(plan, req, resolve_scenario("paper2"), reg_);
+        return plan_host_run(plan, req, framework::resolve_scenario("paper2"), reg_);
     }
 
     test::TempDir dir_;
-    ComponentRegistry reg_;  // no rewrite: no component is built
+    framework::ComponentRegistry reg_;  // no rewrite: no component is built
 };
 
 TEST_F(PlanHostTest, HostWithoutTheClockRunsItsMembersOfTheRun) {
@@ -135,4 +135,4 @@ TEST_F(PlanHostTest, MemberOnNoHostIsAnError) {
 }
 
 }  // namespace
-}  // namespace gdnav::runtime::deploy
+}  // namespace gdnav::launch::deploy

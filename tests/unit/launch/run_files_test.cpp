@@ -7,7 +7,7 @@
 
 #include "temp_dir.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch::batch {
 namespace {
 
 namespace fs = std::filesystem;
@@ -62,4 +62,4 @@ TEST(RunFiles, ARunWithoutItsListDidNotEndWell) {
 }
 
 }  // namespace
-}  // namespace gdnav::app
+}  // namespace gdnav::launch::batch

@@ -8,7 +8,7 @@
 
 #include "temp_dir.hpp"
 
-namespace gdnav::runtime {
+namespace gdnav::launch {
 namespace {
 
 TEST(RunOutcome, FailedRunNamesTheClocksReasonAndTheExitCode) {
@@ -54,4 +54,4 @@ TEST(RunOutcome, CompletedRunNamesEachMemberItWentOnWithoutOnce) {
 }
 
 }  // namespace
-}  // namespace gdnav::runtime
+}  // namespace gdnav::launch

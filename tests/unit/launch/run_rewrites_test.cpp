@@ -9,22 +9,22 @@
 #include "temp_dir.hpp"
 #include "paper_scenarios.hpp"
 
-namespace gdnav::app {
+namespace gdnav::launch {
 namespace {
 
-using runtime::RunConfig;
+using framework::RunConfig;
 
 class RunRewritesTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        runtime::register_gdnav_topics();
+        framework::register_gdnav_topics();
         scenario::register_paper_scenarios();
     }
 
     RunConfig base() const {
-        runtime::RunOverrides o;
+        framework::RunOverrides o;
         o.out_dir = dir_.path().string();
-        return RunConfig::load(runtime::resolve_scenario("default"), o);
+        return RunConfig::load(framework::resolve_scenario("default"), o);
     }
 
     // The one-line error of applying `rw` to the default scenario ("" when it is accepted).
@@ -37,14 +37,14 @@ protected:
         return "";
     }
 
-    static const runtime::MemberSpec* member(const RunConfig& rc, const std::string& name) {
+    static const framework::MemberSpec* member(const RunConfig& rc, const std::string& name) {
         const auto it = std::find_if(rc.members.begin(), rc.members.end(),
-                                     [&](const runtime::MemberSpec& m) { return m.name == name; });
+                                     [&](const framework::MemberSpec& m) { return m.name == name; });
         return it == rc.members.end() ? nullptr : &*it;
     }
 
     test::TempDir dir_;
-    runtime::ComponentRegistry reg_;  // the record rewrite needs no component type
+    framework::ComponentRegistry reg_;  // the record rewrite needs no component type
 };
 
 TEST_F(RunRewritesTest, NoRewriteKeepsTheMembers) {
@@ -62,7 +62,7 @@ TEST_F(RunRewritesTest, RecordDefaultAddsARecorderOfTheFiveSensorTopics) {
     const RunConfig rc = base();
     const RunConfig out = apply_run_rewrites(rc, rw, reg_);
     EXPECT_EQ(out.members.size(), rc.members.size() + 1);
-    const runtime::MemberSpec* r = member(out, "recorder");
+    const framework::MemberSpec* r = member(out, "recorder");
     ASSERT_NE(r, nullptr);
     EXPECT_EQ(r->type, "recorder");
     EXPECT_EQ(r->cfg.node()["topics"].as<std::vector<std::string>>(),
@@ -75,7 +75,7 @@ TEST_F(RunRewritesTest, RecordShortNamesOnceAndTheViewerChannels) {
     RunRewrites rw;
     rw.record = {"ImuSample", "gdnav/ImuSample", "viewer"};
     const RunConfig out = apply_run_rewrites(base(), rw, reg_);
-    const runtime::MemberSpec* r = member(out, "recorder");
+    const framework::MemberSpec* r = member(out, "recorder");
     ASSERT_NE(r, nullptr);
     EXPECT_EQ(r->cfg.node()["topics"].as<std::vector<std::string>>(), (std::vector<std::string>{"gdnav/ImuSample"}));
     EXPECT_TRUE(r->cfg.node()["viewer"].as<bool>());
@@ -95,4 +95,4 @@ TEST_F(RunRewritesTest, BadOptionsGiveOneLineNamingTheOption) {
 }
 
 }  // namespace
-}  // namespace gdnav::app
+}  // namespace gdnav::launch

@@ -117,11 +117,11 @@ TEST(CalibrationPattern, DrawnScenarioOfABatchRunKeepsTheMovedStart) {
     // What gdnav montecarlo writes as each run's drawn_scenario.yaml: with the pattern, the generator moves the run's
     // start, so it needs the run's timing; without it, the drawn text has no timing keys (as before the pattern).
     scenario::register_paper_scenarios();
-    const YAML::Node with = runtime::drawn_scenario(tmpl(2, "{pattern: turns, bank_deg: 20}"), 3, 1, "t");
+    const YAML::Node with = framework::drawn_scenario(tmpl(2, "{pattern: turns, bank_deg: 20}"), 3, 1, "t");
     ASSERT_TRUE(with["run"]["t0_s"]);
     EXPECT_LT(with["run"]["t0_s"].as<double>(), -50.0 - 60.0);  // two full turns at 20 deg of bank take minutes
     EXPECT_GT(with["run"]["duration_s"].as<double>(), 550.0 + 60.0);
-    const YAML::Node without = runtime::drawn_scenario(tmpl(2, ""), 3, 1, "t");
+    const YAML::Node without = framework::drawn_scenario(tmpl(2, ""), 3, 1, "t");
     EXPECT_FALSE(without["run"]["t0_s"]);
     EXPECT_FALSE(without["run"]["duration_s"]);
     EXPECT_TRUE(without["components"]["guidance"]["mission"]);

@@ -210,9 +210,9 @@ TEST(PaperScenario, DrawsStayInsideTheComponentRanges) {
 
 TEST(PaperScenario, RegisteredAsGenerators) {
     scenario::register_paper_scenarios();
-    ASSERT_NE(runtime::find_scenario_generator("paper_scenario1"), nullptr);
-    ASSERT_NE(runtime::find_scenario_generator("paper_scenario2"), nullptr);
-    const YAML::Node doc = (*runtime::find_scenario_generator("paper_scenario2"))(tmpl(), 3, 7, "t");
+    ASSERT_NE(framework::find_scenario_generator("paper_scenario1"), nullptr);
+    ASSERT_NE(framework::find_scenario_generator("paper_scenario2"), nullptr);
+    const YAML::Node doc = (*framework::find_scenario_generator("paper_scenario2"))(tmpl(), 3, 7, "t");
     EXPECT_EQ(doc["components"]["guidance"]["mission"]["operations"].size(), 9u);  // hold + 8 turns (file format)
 }
 

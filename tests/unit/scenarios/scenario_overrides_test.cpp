@@ -62,7 +62,7 @@ TEST(Overrides, GradeForEveryGroupThatHasIt) {
     YAML::Node d = doc();
     scenario::Overrides o;
     o.grades = {"worse"};  // gyroscopes, accelerometers, magnetometers, air_data, atmospheric have it; gnss not
-    const auto notes = scenario::apply_overrides(d, o, runtime::config_dir());
+    const auto notes = scenario::apply_overrides(d, o, framework::config_dir());
     EXPECT_EQ(d["components"]["imu"]["gyr_grade"].as<std::string>(), "worse");
     EXPECT_EQ(d["components"]["imu"]["acc_grade"].as<std::string>(), "worse");
     EXPECT_EQ(d["components"]["mag"]["grade"].as<std::string>(), "worse");
@@ -77,15 +77,15 @@ TEST(Overrides, GradeForOneGroupAndErrors) {
     YAML::Node d = doc();
     scenario::Overrides o;
     o.grades = {"gyroscopes=worst"};
-    (void)scenario::apply_overrides(d, o, runtime::config_dir());
+    (void)scenario::apply_overrides(d, o, framework::config_dir());
     EXPECT_EQ(d["components"]["imu"]["gyr_grade"].as<std::string>(), "worst");
     EXPECT_FALSE(d["components"]["imu"]["acc_grade"]);
     o.grades = {"magnetometers=worst"};  // magnetometers: baseline, better, worse
-    EXPECT_THROW((void)scenario::apply_overrides(d, o, runtime::config_dir()), ConfigError);
+    EXPECT_THROW((void)scenario::apply_overrides(d, o, framework::config_dir()), ConfigError);
     o.grades = {"lidar=better"};
-    EXPECT_THROW((void)scenario::apply_overrides(d, o, runtime::config_dir()), ConfigError);
+    EXPECT_THROW((void)scenario::apply_overrides(d, o, framework::config_dir()), ConfigError);
     o.grades = {"no_such_grade"};
-    EXPECT_THROW((void)scenario::apply_overrides(d, o, runtime::config_dir()), ConfigError);
+    EXPECT_THROW((void)scenario::apply_overrides(d, o, framework::config_dir()), ConfigError);
 }
 
 TEST(Overrides, VariantAndSetOrder) {
@@ -93,17 +93,17 @@ TEST(Overrides, VariantAndSetOrder) {
     scenario::Overrides o;
     o.variants = {"hor_double_integration"};
     o.sets = {"components.pos.variant=nav/variants/baseline.yaml"};  // --set is applied last and wins
-    (void)scenario::apply_overrides(d, o, runtime::config_dir());
+    (void)scenario::apply_overrides(d, o, framework::config_dir());
     EXPECT_EQ(d["components"]["att"]["variant"].as<std::string>(), "nav/variants/hor_double_integration.yaml");
     EXPECT_EQ(d["components"]["pos"]["variant"].as<std::string>(), "nav/variants/baseline.yaml");
     o = {};
     o.variants = {"att=att_zero_fb_derivatives"};
-    (void)scenario::apply_overrides(d, o, runtime::config_dir());
+    (void)scenario::apply_overrides(d, o, framework::config_dir());
     EXPECT_EQ(d["components"]["att"]["variant"].as<std::string>(), "nav/variants/att_zero_fb_derivatives.yaml");
     o.variants = {"nonexistent"};
-    EXPECT_THROW((void)scenario::apply_overrides(d, o, runtime::config_dir()), ConfigError);
+    EXPECT_THROW((void)scenario::apply_overrides(d, o, framework::config_dir()), ConfigError);
     o.variants = {"nobody=baseline"};
-    EXPECT_THROW((void)scenario::apply_overrides(d, o, runtime::config_dir()), ConfigError);
+    EXPECT_THROW((void)scenario::apply_overrides(d, o, framework::config_dir()), ConfigError);
 }
 
 TEST(Overrides, Aliases) {

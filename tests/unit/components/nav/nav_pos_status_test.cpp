@@ -40,12 +40,12 @@ TEST(NavPosComponent, PublishesGateRejectionsUntrustedAndReacquisitionOnComponen
     o.reference_init = false;
     const test::ChainRun r = test::run_chain(sc, o, 91);
 
-    runtime::ComponentRegistry reg;
+    framework::ComponentRegistry reg;
     register_nav_components(reg);
-    std::unique_ptr<runtime::Component> c = reg.create("nav_pos", "nav_pos");
+    std::unique_ptr<framework::Component> c = reg.create("nav_pos", "nav_pos");
     const config::Config cfg = config::Config::parse(
         "{tuning: nav/tuning.yaml, variant: nav/variants/baseline.yaml, init_mode: measurements}", "test");
-    runtime::RunInfo info;
+    framework::RunInfo info;
     info.steps = r.data.size();
     rnd::Stream stream = rnd::Stream::derive(1, 0, "nav_pos");
     c->configure(cfg, info, stream);
@@ -54,11 +54,11 @@ TEST(NavPosComponent, PublishesGateRejectionsUntrustedAndReacquisitionOnComponen
     msg::GnssSample gnss_m;
     msg::AirDataEstimate air_m;
     msg::AttitudeEstimate att_m;
-    for (runtime::InputBase* in : c->inputs()) {
-        if (in->topic() == topics::kImu) runtime::ExecutorAccess::bind(*in, &imu_m);
-        if (in->topic() == topics::kGnss) runtime::ExecutorAccess::bind(*in, &gnss_m);
-        if (in->topic() == topics::kAirData) runtime::ExecutorAccess::bind(*in, &air_m);
-        if (in->topic() == topics::kAttitude) runtime::ExecutorAccess::bind(*in, &att_m);
+    for (framework::InputBase* in : c->inputs()) {
+        if (in->topic() == topics::kImu) framework::ExecutorAccess::bind(*in, &imu_m);
+        if (in->topic() == topics::kGnss) framework::ExecutorAccess::bind(*in, &gnss_m);
+        if (in->topic() == topics::kAirData) framework::ExecutorAccess::bind(*in, &air_m);
+        if (in->topic() == topics::kAttitude) framework::ExecutorAccess::bind(*in, &att_m);
     }
     ASSERT_EQ(c->outputs().size(), 1u);
     const auto* out = static_cast<const msg::PositionEstimate*>(c->outputs()[0]->data());
@@ -70,18 +70,18 @@ TEST(NavPosComponent, PublishesGateRejectionsUntrustedAndReacquisitionOnComponen
     for (std::size_t k = 0; k < r.data.size(); ++k) {
         GnssSample g = r.data[k].gnss;
         if (k >= 2000 && k < 3500 && g.fix_valid) shift_north(g, 500.0);
-        imu_m.f_b_mps2(runtime::to_array(r.data[k].imu.f_b_mps2));
-        imu_m.w_b_rps(runtime::to_array(r.data[k].imu.w_b_rps));
+        imu_m.f_b_mps2(framework::to_array(r.data[k].imu.f_b_mps2));
+        imu_m.w_b_rps(framework::to_array(r.data[k].imu.w_b_rps));
         gnss_m.fix_valid(g.fix_valid);
         gnss_m.lon_rad(g.lon_rad);
         gnss_m.lat_rad(g.lat_rad);
         gnss_m.h_m(g.h_m);
-        gnss_m.v_n_mps(runtime::to_array(g.v_n_mps));
+        gnss_m.v_n_mps(framework::to_array(g.v_n_mps));
         to_msg(r.air[k], air_m);
         to_msg(r.att[k], att_m);
-        const runtime::StepContext ctx{k, r.data[k].truth.t_s, 0.01, k + 1 == r.data.size()};
+        const framework::StepContext ctx{k, r.data[k].truth.t_s, 0.01, k + 1 == r.data.size()};
         c->step(ctx);
-        for (auto& m : runtime::ExecutorAccess::take_status(*c)) {
+        for (auto& m : framework::ExecutorAccess::take_status(*c)) {
             std::printf("  status t=%.2f s: %s\n", ctx.t_s, m.c_str());
             status.push_back(m);
             status_t.push_back(ctx.t_s);

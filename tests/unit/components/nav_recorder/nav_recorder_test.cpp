@@ -25,11 +25,11 @@ constexpr double kH = 1000.0;
 constexpr double kSpeed = 30.0;
 
 // Straight and level northbound flight at 30 m/s, pitch 0.05 rad.
-class FakeTruth final : public runtime::Component {
+class FakeTruth final : public framework::Component {
 public:
     using Component::Component;
-    void configure(const config::Config&, const runtime::RunInfo& run, rnd::Stream&) override { t0_ = run.t0_s; }
-    void step(const runtime::StepContext& ctx) override {
+    void configure(const config::Config&, const framework::RunInfo& run, rnd::Stream&) override { t0_ = run.t0_s; }
+    void step(const framework::StepContext& ctx) override {
         auto& t = out_.value();
         const earth::Radii r = earth::radii(kLat0);
         t.lat_rad(kLat0 + kSpeed * (ctx.t_s - t0_) / (r.m_m + kH));
@@ -46,17 +46,17 @@ public:
     }
 
 private:
-    runtime::Output<msg::Truth> out_{*this, topics::kTruth};
+    framework::Output<msg::Truth> out_{*this, topics::kTruth};
     double t0_{0.0};
 };
 
 // The truth with known errors: TAS +0.5 m/s, AOA +0.01, AOS -0.02 rad, dT +0.3 K; attitude rotated 0.01 rad about
 // the NED down axis (a pure yaw error); 100 m north; h +10 m; v_N +1, v_E -0.5 m/s.
-class PerturbedEstimate final : public runtime::Component {
+class PerturbedEstimate final : public framework::Component {
 public:
     using Component::Component;
-    void configure(const config::Config&, const runtime::RunInfo&, rnd::Stream&) override {}
-    void step(const runtime::StepContext&) override {
+    void configure(const config::Config&, const framework::RunInfo&, rnd::Stream&) override {}
+    void step(const framework::StepContext&) override {
         const auto& t = truth_.get();
         auto& a = air_.value();
         a.tas_mps(t.tas_mps() + 0.5);
@@ -74,14 +74,14 @@ public:
     }
 
 private:
-    runtime::Input<msg::Truth> truth_{*this, topics::kTruth};
-    runtime::Output<msg::AirDataEstimate> air_{*this, topics::kAirData};
-    runtime::Output<msg::AttitudeEstimate> att_{*this, topics::kAttitude};
-    runtime::Output<msg::PositionEstimate> pos_{*this, topics::kPosition};
+    framework::Input<msg::Truth> truth_{*this, topics::kTruth};
+    framework::Output<msg::AirDataEstimate> air_{*this, topics::kAirData};
+    framework::Output<msg::AttitudeEstimate> att_{*this, topics::kAttitude};
+    framework::Output<msg::PositionEstimate> pos_{*this, topics::kPosition};
 };
 
-runtime::ComponentRegistry registry() {
-    runtime::ComponentRegistry reg;
+framework::ComponentRegistry registry() {
+    framework::ComponentRegistry reg;
     reg.add("fake_truth", "", [](const std::string& n) { return std::make_unique<FakeTruth>(n); });
     reg.add("perturbed", "", [](const std::string& n) { return std::make_unique<PerturbedEstimate>(n); });
     nav_recorder::register_nav_recorder(reg);
@@ -95,7 +95,7 @@ fs::path fresh_dir(const std::string& tag) {
 }
 
 // t in [-1, 10] s at 100 Hz (1101 steps), t_GNSS = 5 s, 10 Hz rows, flushes every 20 rows.
-runtime::RunConfig run_config(const fs::path& out) {
+framework::RunConfig run_config(const fs::path& out) {
     const std::string yaml = "run: {seed: 3, run_index: 9, t0_s: -1.0, steps: 1101, dt_s: 0.01, out_dir: '" +
                              out.string() +
                              "'}\n"
@@ -104,7 +104,7 @@ runtime::RunConfig run_config(const fs::path& out) {
                              "  est: {type: perturbed}\n"
                              "  rec: {type: nav_recorder, t_gnss_s: 5, decimation: 10, flush_rows: 20, "
                              "gnss_track: false}\n";
-    return runtime::RunConfig::parse(yaml, "test");
+    return framework::RunConfig::parse(yaml, "test");
 }
 
 struct H5Info {
@@ -157,8 +157,8 @@ H5Info read_h5(const fs::path& file) {
 TEST(NavRecorder, MetricsOfAPerturbedEstimate) {
     const fs::path out = fresh_dir("metrics");
     const auto reg = registry();
-    const runtime::RunConfig rc = run_config(out);
-    runtime::DirectExecutor ex(rc.build(reg), rc.info);
+    const framework::RunConfig rc = run_config(out);
+    framework::DirectExecutor ex(rc.build(reg), rc.info);
     ex.run();
     const metrics::RunRecord r = metrics::read_run_record(out / "metrics.yaml");
     using metrics::Signal;
@@ -197,8 +197,8 @@ TEST(NavRecorder, MetricsOfAPerturbedEstimate) {
 TEST(NavRecorder, InterruptedRunIsMarkedIncomplete) {
     const fs::path out = fresh_dir("interrupted");
     const auto reg = registry();
-    const runtime::RunConfig rc = run_config(out);
-    runtime::DirectExecutor ex(rc.build(reg), rc.info);
+    const framework::RunConfig rc = run_config(out);
+    framework::DirectExecutor ex(rc.build(reg), rc.info);
     for (std::uint64_t k = 0; k < 300; ++k) ex.step(k);
     ex.finish(false);  // what a stopped DDS host does
     EXPECT_FALSE(metrics::run_record_complete(out / "metrics.yaml"));
@@ -215,8 +215,8 @@ TEST(NavRecorder, SigkilledRunLeavesAReadablePartialFile) {
     ASSERT_GE(pid, 0);
     if (pid == 0) {
         const auto reg = registry();
-        const runtime::RunConfig rc = run_config(out);
-        runtime::DirectExecutor ex(rc.build(reg), rc.info);
+        const framework::RunConfig rc = run_config(out);
+        framework::DirectExecutor ex(rc.build(reg), rc.info);
         for (std::uint64_t k = 0; k < 550; ++k) ex.step(k);  // flushes after rows 20 and 40 (steps 190, 390)
         raise(SIGKILL);
         _exit(0);
@@ -237,8 +237,8 @@ TEST(NavRecorder, SigkilledRunLeavesAReadablePartialFile) {
 
 TEST(NavRecorder, NoOutputDirectoryWritesNothing) {
     const auto reg = registry();
-    runtime::RunConfig rc = run_config("");
+    framework::RunConfig rc = run_config("");
     rc.info.out_dir.clear();
-    runtime::DirectExecutor ex(rc.build(reg), rc.info);
+    framework::DirectExecutor ex(rc.build(reg), rc.info);
     EXPECT_EQ(ex.run(), 1101u);
 }

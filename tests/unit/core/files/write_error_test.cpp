@@ -12,7 +12,7 @@
 
 #include "temp_dir.hpp"
 
-namespace gdnav::files {
+namespace gdnav::core::files {
 namespace {
 
 std::string read(const std::filesystem::path& p) {
@@ -64,4 +64,4 @@ TEST(WriteError, AContextGoesBeforeTheFile) {
 }
 
 }  // namespace
-}  // namespace gdnav::files
+}  // namespace gdnav::core::files

@@ -8,7 +8,7 @@
 #include "config/config.hpp"
 #include "temp_dir.hpp"
 
-namespace gdnav::app {
+namespace gdnav::io::flight_log {
 namespace {
 
 namespace fs = std::filesystem;
@@ -98,4 +98,4 @@ TEST(CsvTable, NumbersInEveryStrtodForm) {
 }
 
 }  // namespace
-}  // namespace gdnav::app
+}  // namespace gdnav::io::flight_log

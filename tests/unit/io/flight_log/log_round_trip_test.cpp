@@ -12,7 +12,7 @@
 #include "io/flight_log/log_import.hpp"
 #include "io/flight_log/log_layout.hpp"
 
-namespace gdnav::app {
+namespace gdnav::io::flight_log {
 namespace {
 
 namespace fs = std::filesystem;
@@ -49,7 +49,7 @@ void write_log(const fs::path& dir) {
 
 class LogRoundTrip : public ::testing::Test {
 protected:
-    void SetUp() override { runtime::register_gdnav_topics(); }
+    void SetUp() override { framework::register_gdnav_topics(); }
     test::TempDir t_;
 };
 
@@ -124,4 +124,4 @@ TEST_F(LogRoundTrip, BadInputsAreOneLineErrors) {
 }
 
 }  // namespace
-}  // namespace gdnav::app
+}  // namespace gdnav::io::flight_log

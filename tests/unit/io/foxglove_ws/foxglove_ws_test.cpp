@@ -16,7 +16,7 @@
 #include "io/foxglove_ws/protocol.hpp"
 #include "io/foxglove_ws/server.hpp"
 
-using namespace gdnav::foxglove_ws;
+using namespace gdnav::io::foxglove_ws;
 using nlohmann::json;
 
 namespace {

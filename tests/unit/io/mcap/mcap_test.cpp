@@ -14,7 +14,7 @@
 #include "io/mcap/mcap_writer.hpp"
 
 namespace fs = std::filesystem;
-using namespace gdnav::mcap;
+using namespace gdnav::io::mcap;
 
 namespace {
 

@@ -17,24 +17,24 @@ using namespace gdnav;
 
 namespace {
 
-class Owner final : public runtime::Component {
+class Owner final : public framework::Component {
 public:
     Owner() : Component("owner") {}
-    void configure(const config::Config&, const runtime::RunInfo&, rnd::Stream&) override {}
-    void step(const runtime::StepContext&) override {}
-    runtime::Input<msg::Truth> truth{*this, topics::kTruth};
+    void configure(const config::Config&, const framework::RunInfo&, rnd::Stream&) override {}
+    void step(const framework::StepContext&) override {}
+    framework::Input<msg::Truth> truth{*this, topics::kTruth};
 };
 
 template <class T>
 T decode(const std::vector<std::uint8_t>& cdr) {
-    recorder::SampleDecoder dec(runtime::message_ops<T>());
+    io::recording::SampleDecoder dec(msg::message_ops<T>());
     T out;
     EXPECT_TRUE(dec.decode(cdr.data(), static_cast<std::uint32_t>(cdr.size()), &out));
     return out;
 }
 
-runtime::InputBase* find_input(Owner& o, const std::string& topic) {
-    for (runtime::InputBase* in : o.inputs())
+framework::InputBase* find_input(Owner& o, const std::string& topic) {
+    for (framework::InputBase* in : o.inputs())
         if (in->topic() == topic) return in;
     return nullptr;
 }
@@ -42,7 +42,7 @@ runtime::InputBase* find_input(Owner& o, const std::string& topic) {
 }  // namespace
 
 TEST(ViewerChannels, ListsSevenChannelsWithSchemasAViewerRecognises) {
-    const auto& c = viewer::viewer_channels();
+    const auto& c = io::viewer::viewer_channels();
     ASSERT_EQ(c.size(), 7u);
     EXPECT_EQ(c[0].topic, "/viewer/true/fix");
     EXPECT_EQ(c[1].topic, "/viewer/est/fix");
@@ -59,18 +59,18 @@ TEST(ViewerChannels, ListsSevenChannelsWithSchemasAViewerRecognises) {
         // Self-contained: no preprocessor line (#include) for the viewer's parser to resolve.
         EXPECT_EQ(ch.schema.find("\n#"), std::string::npos) << ch.topic;
         EXPECT_NE(ch.schema.front(), '#') << ch.topic;
-        EXPECT_TRUE(viewer::is_viewer_channel(ch.topic, ch.schema_name, "omgidl", "cdr"));
+        EXPECT_TRUE(io::viewer::is_viewer_channel(ch.topic, ch.schema_name, "omgidl", "cdr"));
     }
     EXPECT_NE(c[0].schema.find("struct LocationFix"), std::string::npos);
     EXPECT_NE(c[5].schema.find("struct PoseInFrame"), std::string::npos);
     EXPECT_NE(c[4].schema.find("struct NavErrors"), std::string::npos);
-    EXPECT_FALSE(viewer::is_viewer_channel("/viewer/true/fix", "foxglove::FrameTransform", "omgidl", "cdr"));
-    EXPECT_FALSE(viewer::is_viewer_channel("/imu", "foxglove::LocationFix", "omgidl", "cdr"));
+    EXPECT_FALSE(io::viewer::is_viewer_channel("/viewer/true/fix", "foxglove::FrameTransform", "omgidl", "cdr"));
+    EXPECT_FALSE(io::viewer::is_viewer_channel("/imu", "foxglove::LocationFix", "omgidl", "cdr"));
 }
 
 TEST(ViewerChannels, ReusesTheOwnersInputsAndEncodesAtDecimatedSteps) {
     Owner owner;
-    viewer::ViewerChannels vc(owner, viewer::ViewerOptions{10});
+    io::viewer::ViewerChannels vc(owner, io::viewer::ViewerOptions{10});
     // Truth was the owner's; the three estimates are declared on it.
     ASSERT_EQ(owner.inputs().size(), 4u);
     EXPECT_EQ(find_input(owner, topics::kTruth), &owner.truth);
@@ -91,9 +91,9 @@ TEST(ViewerChannels, ReusesTheOwnersInputsAndEncodesAtDecimatedSteps) {
     p.v_n_mps({30.0, 40.0, 0.0});
     p.gnss_denied(true);
     msg::AirDataEstimate a;
-    runtime::ExecutorAccess::bind(owner.truth, &t);
+    framework::ExecutorAccess::bind(owner.truth, &t);
 
-    std::vector<viewer::ViewerMessage> out;
+    std::vector<io::viewer::ViewerMessage> out;
     // Step 10 with Truth only: the three true channels.
     vc.encode({10, 0.1, 0.01, false}, 100'000'000ULL, out);
     ASSERT_EQ(out.size(), 3u);
@@ -122,9 +122,9 @@ TEST(ViewerChannels, ReusesTheOwnersInputsAndEncodesAtDecimatedSteps) {
 
     // Step 15: between decimated steps, nothing.
     out.clear();
-    runtime::ExecutorAccess::bind(*find_input(owner, topics::kAttitude), &q);
-    runtime::ExecutorAccess::bind(*find_input(owner, topics::kPosition), &p);
-    runtime::ExecutorAccess::bind(*find_input(owner, topics::kAirData), &a);
+    framework::ExecutorAccess::bind(*find_input(owner, topics::kAttitude), &q);
+    framework::ExecutorAccess::bind(*find_input(owner, topics::kPosition), &p);
+    framework::ExecutorAccess::bind(*find_input(owner, topics::kAirData), &a);
     vc.encode({15, 0.15, 0.01, false}, 150'000'000ULL, out);
     EXPECT_TRUE(out.empty());
 

@@ -11,8 +11,8 @@
 
 namespace {
 
-const gdnav::viewer::ViewerChannel* channel(const std::string& topic) {
-    for (const auto& c : gdnav::viewer::viewer_channels())
+const gdnav::io::viewer::ViewerChannel* channel(const std::string& topic) {
+    for (const auto& c : gdnav::io::viewer::viewer_channels())
         if (c.topic == topic) return &c;
     return nullptr;
 }

@@ -21,7 +21,7 @@ constexpr double kM45 = 6367381.816;
 // Level flight heading north: the body's forward axis is north = ENU +y, i.e. the FLU body is the ENU frame turned
 // +90 deg about up: q = (cos 45, 0, 0, sin 45).
 TEST(ViewerMath, HeadingNorthIsNinetyDegreesAboutUpInEnu) {
-    const math::Quat q = viewer::quat_enu_flu(math::quat_from_euler({0.0, 0.0, 0.0}));
+    const math::Quat q = io::viewer::quat_enu_flu(math::quat_from_euler({0.0, 0.0, 0.0}));
     const double h = std::sqrt(0.5);
     EXPECT_NEAR(q.w(), h, 1e-15);
     EXPECT_NEAR(q.x(), 0.0, 1e-15);
@@ -31,7 +31,7 @@ TEST(ViewerMath, HeadingNorthIsNinetyDegreesAboutUpInEnu) {
 
 // Level flight heading east: forward = east = ENU +x, left = north = +y, up = +z: the identity.
 TEST(ViewerMath, HeadingEastIsTheIdentityInEnu) {
-    const math::Quat q = viewer::quat_enu_flu(math::quat_from_euler({deg2rad(90.0), 0.0, 0.0}));
+    const math::Quat q = io::viewer::quat_enu_flu(math::quat_from_euler({deg2rad(90.0), 0.0, 0.0}));
     EXPECT_NEAR(q.w(), 1.0, 1e-15);
     EXPECT_NEAR(q.x(), 0.0, 1e-15);
     EXPECT_NEAR(q.y(), 0.0, 1e-15);
@@ -42,7 +42,7 @@ TEST(ViewerMath, HeadingEastIsTheIdentityInEnu) {
 // ENU (cos th sin psi, cos th cos psi, sin th) — nose up is +z.
 TEST(ViewerMath, ForwardAxisPointsAlongTheNoseInEnu) {
     const double psi = deg2rad(30.0), th = deg2rad(10.0);
-    const math::Quat q = viewer::quat_enu_flu(math::quat_from_euler({psi, th, 0.0}));
+    const math::Quat q = io::viewer::quat_enu_flu(math::quat_from_euler({psi, th, 0.0}));
     const math::Vec3 fwd = rotate(q, {1.0, 0.0, 0.0});
     EXPECT_NEAR(fwd.x(), std::cos(th) * std::sin(psi), 1e-14);
     EXPECT_NEAR(fwd.y(), std::cos(th) * std::cos(psi), 1e-14);
@@ -54,7 +54,7 @@ TEST(ViewerMath, ForwardAxisPointsAlongTheNoseInEnu) {
 // up axis in ENU = (sin phi, 0, cos phi); the left wing (FLU +y) points west and up: (-cos phi, 0, sin phi).
 TEST(ViewerMath, BankTiltsTheRoofTowardsTheLoweredWing) {
     const double phi = deg2rad(20.0);
-    const math::Quat q = viewer::quat_enu_flu(math::quat_from_euler({0.0, 0.0, phi}));
+    const math::Quat q = io::viewer::quat_enu_flu(math::quat_from_euler({0.0, 0.0, phi}));
     const math::Vec3 up = rotate(q, {0.0, 0.0, 1.0});
     const math::Vec3 left = rotate(q, {0.0, 1.0, 0.0});
     EXPECT_NEAR(up.x(), std::sin(phi), 1e-14);
@@ -69,26 +69,27 @@ TEST(ViewerMath, BankTiltsTheRoofTowardsTheLoweredWing) {
 // (M dlat, N cos(lat) dlon at 45 deg and h = 0; second-order terms < 1 mm at these distances).
 TEST(ViewerMath, EnuOffsetsOfSmallDisplacements) {
     const earth::Geodetic o{deg2rad(10.0), deg2rad(45.0), 0.0};
-    const math::Vec3 up = viewer::enu_offset_m(o, {o.lon_rad, o.lat_rad, 100.0});
+    const math::Vec3 up = io::viewer::enu_offset_m(o, {o.lon_rad, o.lat_rad, 100.0});
     EXPECT_NEAR(up.x(), 0.0, 1e-6);
     EXPECT_NEAR(up.y(), 0.0, 1e-6);
     EXPECT_NEAR(up.z(), 100.0, 1e-6);
     const double d = 1e-5;  // rad: 64 m
-    const math::Vec3 north = viewer::enu_offset_m(o, {o.lon_rad, o.lat_rad + d, 0.0});
+    const math::Vec3 north = io::viewer::enu_offset_m(o, {o.lon_rad, o.lat_rad + d, 0.0});
     EXPECT_NEAR(north.x(), 0.0, 1e-6);
     EXPECT_NEAR(north.y(), kM45 * d, 1e-3);
     EXPECT_NEAR(north.z(), 0.0, 1e-3);
-    const math::Vec3 east = viewer::enu_offset_m(o, {o.lon_rad + d, o.lat_rad, 0.0});
+    const math::Vec3 east = io::viewer::enu_offset_m(o, {o.lon_rad + d, o.lat_rad, 0.0});
     EXPECT_NEAR(east.x(), kN45 * std::cos(o.lat_rad) * d, 1e-3);
     EXPECT_NEAR(east.y(), 0.0, 1e-3);
     EXPECT_NEAR(east.z(), 0.0, 1e-3);
 }
 
 TEST(ViewerMath, TimePartsSplitNanoseconds) {
-    const viewer::TimeParts t = viewer::time_parts(150'000'000'010ULL);  // GNSS loss of the paper scenarios + 10 ns
+    // GNSS loss of the paper scenarios + 10 ns
+    const io::viewer::TimeParts t = io::viewer::time_parts(150'000'000'010ULL);
     EXPECT_EQ(t.sec, 150u);
     EXPECT_EQ(t.nsec, 10u);
-    const viewer::TimeParts h = viewer::time_parts(3'600'999'999'999ULL);
+    const io::viewer::TimeParts h = io::viewer::time_parts(3'600'999'999'999ULL);
     EXPECT_EQ(h.sec, 3600u);
     EXPECT_EQ(h.nsec, 999'999'999u);
 }
@@ -107,7 +108,7 @@ TEST(ViewerMath, NavErrorValuesInViewerUnits) {
     est.lat_rad += 1e-5;
     est.v_n_mps = {30.0, 41.0, 0.0};
     est.tas_mps = 52.5;
-    const viewer::NavErrorValues v = viewer::nav_error_values(est, truth, {kN45, kM45});
+    const io::viewer::NavErrorValues v = io::viewer::nav_error_values(est, truth, {kN45, kM45});
     EXPECT_NEAR(v.att_err_deg, 1.0, 1e-12);
     EXPECT_NEAR(v.yaw_err_deg, 1.0, 1e-12);
     EXPECT_NEAR(v.pitch_err_deg, 0.0, 1e-12);

@@ -34,11 +34,11 @@
 
 namespace gdnav::client {
 
-using runtime::Lag;
+using framework::Lag;
 template <class T>
-using In = runtime::Input<T>;    // available(), lost(), get()
+using In = framework::Input<T>;  // available(), lost(), get()
 template <class T>
-using Out = runtime::Output<T>;  // value()
+using Out = framework::Output<T>;  // value()
 
 struct Options {
     std::string name;                    // member name: must match `--external NAME` of the run
@@ -94,8 +94,8 @@ public:
     }
     // Untyped ports by topic name (type from the topic table; used by the Python bindings). Throws
     // std::invalid_argument naming the known topics when the topic is unknown.
-    const runtime::InputBase& input_any(const std::string& topic, Lag lag = Lag::Same);
-    runtime::OutputBase& output_any(const std::string& topic);
+    const framework::InputBase& input_any(const std::string& topic, Lag lag = Lag::Same);
+    framework::OutputBase& output_any(const std::string& topic);
 
     void on_step(std::function<void(const StepInfo&)> fn);
     void on_finish(std::function<void(bool completed)> fn);
@@ -107,13 +107,13 @@ public:
     int run();
 
 private:
-    runtime::Component& component();
+    framework::Component& component();
     class Adapter;
     Options opt_;
     std::unique_ptr<Adapter> comp_;
     Adapter* adapter_{nullptr};  // comp_, also while the host owns it during run()
-    std::vector<std::unique_ptr<runtime::InputBase>> inputs_;
-    std::vector<std::unique_ptr<runtime::OutputBase>> outputs_;
+    std::vector<std::unique_ptr<framework::InputBase>> inputs_;
+    std::vector<std::unique_ptr<framework::OutputBase>> outputs_;
 };
 
 // spdlog to stderr named after the member (call once, before run(); Member::run() does it if nothing is set up).
