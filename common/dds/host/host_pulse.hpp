@@ -17,13 +17,12 @@
 
 namespace gdnav::dds::host {
 
+// Neither copied nor moved (its mutex and thread are not): the thread holds `this`.
 class Pulse {
 public:
     // The pulse thread starts here, before the host lowers its process's CPU priority, which spares it (tid()).
     Pulse();
     ~Pulse();
-    Pulse(const Pulse&) = delete;
-    Pulse& operator=(const Pulse&) = delete;
 
     // The ComponentStatus writer the heartbeats go on (before the first send()).
     void attach(eprosima::fastdds::dds::DataWriter* writer);

@@ -31,8 +31,8 @@
 // (J = d v_air_b / d(TAS, AOA, AOS)); the wind walks (wind_walk_mps_s_rts: the wind's slow changes), the turbulence
 // decays with turb_tau_s to its stationary turb_sigma_mps (a correlated error the air data cannot average away, so
 // not a white measurement noise). After the loss it is the velocity reference: it holds the tilt through gravity (the velocity's
-// slope is phi x g + R dE_acc + the wind's acceleration) and with the magnetometer at the sensor's own noise keeps
-// the heading, gyro bias and field calibration the GNSS phase found (docs/navigation.md, "Keeping the GNSS
+// slope is phi x g + R dE_acc + the wind's acceleration) and with the magnetometer (mag_noise_nT) keeps the
+// heading, gyro bias and field calibration the GNSS phase found (docs/navigation.md, "Keeping the GNSS
 // calibration").
 // Aligned (latched) at a GNSS fix once tilt and heading sigmas have been below their limits for hold_s, and not
 // before not_before_s (the calibrated scenarios hand over at the paper's t0, where its filters start from the
