@@ -1,8 +1,9 @@
 // The six navigation variants against the paper's definitions. The tests feed the model
 // functions the filters call (att::observe, denied::step) inputs crafted so that the term in question is the only
 // one that differs. They check that each variant drops or integrates exactly the terms of the paper's equation and
-// changes nothing else. The paper (/work/shared/spec/paper.tex) is cited by \label. The equation numbers are
-// counted in order through the numbered rows of its source.
+// changes nothing else. The paper (Gallo & Barrientos, "Minimization of GNSS-Denied Inertial Navigation Errors for
+// Fixed Wing Autonomous UAVs"; docs/navigation.md) is cited by the \label of its LaTeX source. The equation numbers
+// are counted in order through the numbered rows of that source.
 //
 //   variant file               | model switch                   | paper
 //   baseline                   | specific_force: baseline       | (17) filter_att_obs_fIBB
