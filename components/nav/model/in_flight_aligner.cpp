@@ -32,41 +32,46 @@ constexpr int kPhi = 0, kV = 3, kP = 6, kBg = 9, kBa = 12, kEm = 15, kBd = 18, k
 using Mat3 = Eigen::Matrix3d;
 
 // The section's keys (keys and ranges: this file's first comment), in the order they are read (the first bad key is
-// the one reported): name, setting, degrees in the file, range in the file's unit; the step counts whole numbers.
+// the one reported), each with its setting and its range in the file's unit: plain, in degrees (the setting in
+// radians) or a whole number of steps.
 using Settings = InFlightAlignerSettings;
-constexpr std::array<config::NumberKey<Settings>, 32> kKeys{{
-    {"tilt_sigma_deg", &Settings::tilt_sigma_rad, true, {0.1, 30.0}},
-    {"heading_sigma_deg", &Settings::heading_sigma_rad, true, {0.5, 60.0}},
-    {"gyr_bias_sigma_dps", &Settings::gyr_bias_sigma_rps, true, {1e-4, 5.0}},
-    {"acc_bias_sigma_mps2", &Settings::acc_bias_sigma_mps2, false, {1e-4, 5.0}},
-    {"mag_bias_sigma_nT", &Settings::mag_bias_sigma_nT, false, {1.0, 1e4}},
-    {"b_dev_sigma_nT", &Settings::b_dev_sigma_nT, false, {1.0, 1e4}},
-    {"gyr_noise_dps_rts", &Settings::gyr_noise_rps_rts, true, {1e-5, 1.0}},
-    {"acc_noise_mps2_rts", &Settings::acc_noise_mps2_rts, false, {1e-5, 1.0}},
-    {"gyr_bias_walk_dps_s_rts", &Settings::gyr_bias_walk_rps_s_rts, true, {0.0, 0.1}},
-    {"acc_bias_walk_mps2_s_rts", &Settings::acc_bias_walk_mps2_s_rts, false, {0.0, 0.1}},
-    {"mag_walk_nT_rts", &Settings::mag_walk_nT_rts, false, {0.0, 100.0}},
-    {"mag_noise_nT", &Settings::mag_noise_nT, false, {0.1, 1e4}},
-    {"mag_period_steps", nullptr, false, {1, 1000}, nullptr, &Settings::mag_period_steps},
-    {"gnss_hor_sigma_m", &Settings::gnss_hor_sigma_m, false, {0.1, 100.0}},
-    {"gnss_ver_sigma_m", &Settings::gnss_ver_sigma_m, false, {0.1, 100.0}},
-    {"gnss_vel_sigma_mps", &Settings::gnss_vel_sigma_mps, false, {0.01, 10.0}},
-    {"wind_sigma_mps", &Settings::wind_sigma_mps, false, {0.01, 50.0}},
-    {"wind_walk_mps_s_rts", &Settings::wind_walk_mps_s_rts, false, {0.0, 10.0}},
-    {"air_vel_sigma_mps", &Settings::air_vel_sigma_mps, false, {0.01, 20.0}},
-    {"air_vel_sigma_denied_mps", &Settings::air_vel_sigma_denied_mps, false, {0.01, 20.0}},
-    {"air_period_steps", nullptr, false, {1, 1000}, nullptr, &Settings::air_period_steps},
-    {"mag_scale_sigma", &Settings::mag_scale_sigma, false, {0.0, 0.1}},
-    {"mag_cross_sigma", &Settings::mag_cross_sigma, false, {0.0, 0.1}},
-    {"turb_sigma_mps", &Settings::turb_sigma_mps, false, {0.0, 10.0}},
-    {"turb_tau_s", &Settings::turb_tau_s, false, {0.1, 1000.0}},
-    {"tas_offset_sigma_mps", &Settings::tas_offset_sigma_mps, false, {0.0, 10.0}},
-    {"aoa_offset_sigma_deg", &Settings::aoa_offset_sigma_rad, true, {0.0, 10.0}},
-    {"aos_offset_sigma_deg", &Settings::aos_offset_sigma_rad, true, {0.0, 10.0}},
-    {"tilt_sigma_max_deg", &Settings::tilt_sigma_max_rad, true, {0.001, 10.0}},
-    {"heading_sigma_max_deg", &Settings::heading_sigma_max_rad, true, {0.001, 10.0}},
-    {"hold_s", &Settings::hold_s, false, {0.0, 600.0}},
-    {"not_before_s", &Settings::not_before_s, false, {-1e6, 1e6}},
+using Key = config::NumberKey<Settings>;
+constexpr Key plain(const char* k, double Settings::*v, Range r) { return {k, v, false, r}; }
+constexpr Key degrees(const char* k, double Settings::*v, Range r) { return {k, v, true, r}; }
+constexpr Key steps(const char* k, int Settings::*n, Range r) { return {k, nullptr, false, r, nullptr, n}; }
+constexpr std::array<Key, 32> kKeys{{
+    degrees("tilt_sigma_deg", &Settings::tilt_sigma_rad, {0.1, 30.0}),
+    degrees("heading_sigma_deg", &Settings::heading_sigma_rad, {0.5, 60.0}),
+    degrees("gyr_bias_sigma_dps", &Settings::gyr_bias_sigma_rps, {1e-4, 5.0}),
+    plain("acc_bias_sigma_mps2", &Settings::acc_bias_sigma_mps2, {1e-4, 5.0}),
+    plain("mag_bias_sigma_nT", &Settings::mag_bias_sigma_nT, {1.0, 1e4}),
+    plain("b_dev_sigma_nT", &Settings::b_dev_sigma_nT, {1.0, 1e4}),
+    degrees("gyr_noise_dps_rts", &Settings::gyr_noise_rps_rts, {1e-5, 1.0}),
+    plain("acc_noise_mps2_rts", &Settings::acc_noise_mps2_rts, {1e-5, 1.0}),
+    degrees("gyr_bias_walk_dps_s_rts", &Settings::gyr_bias_walk_rps_s_rts, {0.0, 0.1}),
+    plain("acc_bias_walk_mps2_s_rts", &Settings::acc_bias_walk_mps2_s_rts, {0.0, 0.1}),
+    plain("mag_walk_nT_rts", &Settings::mag_walk_nT_rts, {0.0, 100.0}),
+    plain("mag_noise_nT", &Settings::mag_noise_nT, {0.1, 1e4}),
+    steps("mag_period_steps", &Settings::mag_period_steps, {1, 1000}),
+    plain("gnss_hor_sigma_m", &Settings::gnss_hor_sigma_m, {0.1, 100.0}),
+    plain("gnss_ver_sigma_m", &Settings::gnss_ver_sigma_m, {0.1, 100.0}),
+    plain("gnss_vel_sigma_mps", &Settings::gnss_vel_sigma_mps, {0.01, 10.0}),
+    plain("wind_sigma_mps", &Settings::wind_sigma_mps, {0.01, 50.0}),
+    plain("wind_walk_mps_s_rts", &Settings::wind_walk_mps_s_rts, {0.0, 10.0}),
+    plain("air_vel_sigma_mps", &Settings::air_vel_sigma_mps, {0.01, 20.0}),
+    plain("air_vel_sigma_denied_mps", &Settings::air_vel_sigma_denied_mps, {0.01, 20.0}),
+    steps("air_period_steps", &Settings::air_period_steps, {1, 1000}),
+    plain("mag_scale_sigma", &Settings::mag_scale_sigma, {0.0, 0.1}),
+    plain("mag_cross_sigma", &Settings::mag_cross_sigma, {0.0, 0.1}),
+    plain("turb_sigma_mps", &Settings::turb_sigma_mps, {0.0, 10.0}),
+    plain("turb_tau_s", &Settings::turb_tau_s, {0.1, 1000.0}),
+    plain("tas_offset_sigma_mps", &Settings::tas_offset_sigma_mps, {0.0, 10.0}),
+    degrees("aoa_offset_sigma_deg", &Settings::aoa_offset_sigma_rad, {0.0, 10.0}),
+    degrees("aos_offset_sigma_deg", &Settings::aos_offset_sigma_rad, {0.0, 10.0}),
+    degrees("tilt_sigma_max_deg", &Settings::tilt_sigma_max_rad, {0.001, 10.0}),
+    degrees("heading_sigma_max_deg", &Settings::heading_sigma_max_rad, {0.001, 10.0}),
+    plain("hold_s", &Settings::hold_s, {0.0, 600.0}),
+    plain("not_before_s", &Settings::not_before_s, {-1e6, 1e6}),
 }};
 }  // namespace
 
