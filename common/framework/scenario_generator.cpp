@@ -5,17 +5,17 @@
 namespace gdnav::framework {
 
 namespace {
-std::map<std::string, ScenarioGenerator>& table() {
+std::map<std::string, ScenarioGenerator>& generators() {
     static std::map<std::string, ScenarioGenerator> t;
     return t;
 }
 }  // namespace
 
-void register_scenario_generator(const std::string& name, ScenarioGenerator g) { table()[name] = std::move(g); }
+void register_scenario_generator(const std::string& name, ScenarioGenerator g) { generators()[name] = std::move(g); }
 
 const ScenarioGenerator* find_scenario_generator(const std::string& name) {
-    auto it = table().find(name);
-    return it == table().end() ? nullptr : &it->second;
+    auto it = generators().find(name);
+    return it == generators().end() ? nullptr : &it->second;
 }
 
 YAML::Node drawn_scenario(const YAML::Node& doc, std::uint64_t seed, std::uint64_t run_index,
@@ -54,7 +54,7 @@ YAML::Node drawn_scenario(const YAML::Node& doc, std::uint64_t seed, std::uint64
 
 std::vector<std::string> scenario_generator_names() {
     std::vector<std::string> v;
-    for (const auto& [k, _] : table()) v.push_back(k);
+    for (const auto& [k, _] : generators()) v.push_back(k);
     return v;
 }
 

@@ -5,7 +5,7 @@
 namespace gdnav::core::metrics {
 
 namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kNoTrend = std::numeric_limits<double>::quiet_NaN();  // fewer than two distinct times
 }
 
 void LinearTrend::add(double t, double y) {
@@ -21,10 +21,10 @@ void LinearTrend::add(double t, double y) {
     s_ty_ += dt * (y - y_mean_);
 }
 
-double LinearTrend::slope() const { return n_ >= 2 && s_tt_ > 0.0 ? s_ty_ / s_tt_ : kNaN; }
+double LinearTrend::slope() const { return n_ >= 2 && s_tt_ > 0.0 ? s_ty_ / s_tt_ : kNoTrend; }
 
 double LinearTrend::r2() const {
-    return n_ >= 2 && s_tt_ > 0.0 && s_yy_ > 0.0 ? s_ty_ * s_ty_ / (s_tt_ * s_yy_) : kNaN;
+    return n_ >= 2 && s_tt_ > 0.0 && s_yy_ > 0.0 ? s_ty_ * s_ty_ / (s_tt_ * s_yy_) : kNoTrend;
 }
 
 }  // namespace gdnav::core::metrics

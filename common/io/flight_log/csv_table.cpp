@@ -16,6 +16,12 @@ void input_error(const std::string& where, const std::string& what) {
     throw config::ConfigError("config error: " + where + ": " + what);
 }
 
+std::string fmt_t(double t_s) {
+    char b[48];
+    std::snprintf(b, sizeof(b), "%.6f", t_s);
+    return b;
+}
+
 namespace {
 
 std::string trim(const std::string& s) {

@@ -12,6 +12,9 @@ namespace gdnav::io::flight_log {
 // Throws the one-line ConfigError "config error: WHERE: WHAT" of a flight log's files.
 [[noreturn]] void input_error(const std::string& where, const std::string& what);
 
+// A time in those messages: fixed notation, 6 decimals ("12.340000").
+std::string fmt_t(double t_s);
+
 struct CsvTable {
     std::string file;
     std::vector<std::string> columns;  // in the order requested from read_csv

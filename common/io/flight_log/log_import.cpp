@@ -27,12 +27,6 @@ std::string fmt_exact(double v) {
     return b;
 }
 
-std::string fmt_t(double t) {
-    char b[48];
-    std::snprintf(b, sizeof(b), "%.6f", t);
-    return b;
-}
-
 struct Sample {
     const msg::MessageOps* ops;
     void* p;

@@ -18,12 +18,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-std::string fmt_t(double t) {
-    char b[48];
-    std::snprintf(b, sizeof(b), "%.6f", t);
-    return b;
-}
-
 // The column names of the header row (the first line that is neither empty nor a '#' comment).
 std::vector<std::string> header_of(const fs::path& file) {
     std::ifstream in(file);

@@ -4,10 +4,6 @@
 
 namespace gdnav::guidance {
 
-namespace {
-constexpr double kTimeTolerance_s = 1e-10;
-}
-
 Guidance::Guidance(const Mission& mission) : mission_(mission) { validate(mission_); }
 
 void Guidance::start_operation(std::size_t op, double t_s, const NavState& est) {

@@ -5,7 +5,6 @@
 namespace gdnav::guidance {
 
 namespace {
-constexpr double kTimeTolerance_s = 1e-10;  // as the reference: guards against t accumulated in steps of 0.01 s
 constexpr double kBearingWindow_rad = math::kPi / 2.0;
 }  // namespace
 

@@ -15,6 +15,10 @@
 
 namespace gdnav::guidance {
 
+// Times within this of a trigger's or the mission's end count as reached: guards against t accumulated in steps of
+// 0.01 s, as the reference does.
+inline constexpr double kTimeTolerance_s = 1e-10;
+
 class TriggerState {
 public:
     // Arms `trigger` for an operation starting at time t_s with estimate `est`.
