@@ -32,6 +32,7 @@ import numpy as np  # noqa: E402
 
 from batch_runs import (DEG, DamagedRun, Streamed, batch_label, final_distance, load_failures, load_runs, read_table,  # noqa: E402
                         signal)
+from file_errors import naming  # noqa: E402
 
 # (column of /error, label, scale to plot units, unit)
 ATTITUDE = [("yaw_rad", r"$\hat\psi-\psi$", DEG, "deg"), ("pitch_rad", r"$\hat\theta-\theta$", DEG, "deg"),
@@ -74,7 +75,8 @@ def time_figure(path, title, rows, stats, series, best, worst, t_gnss, t_min, ra
     axes[0, 0].legend(loc="upper left", fontsize=7, ncol=4)
     axes[-1, 0].set_xlabel("t [s]   (dotted: GNSS lost)")
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    with naming(path):
+        fig.savefig(path, dpi=110)
     plt.close(fig)
 
 
@@ -109,7 +111,8 @@ def scatter_figures(out, runs, label):
     for ax in axes:
         ax.grid(True, alpha=0.3)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "attitude_scatter.png"), dpi=110)
+    with naming(os.path.join(out, "attitude_scatter.png")):
+        fig.savefig(os.path.join(out, "attitude_scatter.png"), dpi=110)
     plt.close(fig)
 
     fig, axes = plt.subplots(1, 2, figsize=(10, 4.2))
@@ -142,7 +145,8 @@ def scatter_figures(out, runs, label):
     for ax in axes:
         ax.grid(True, alpha=0.3)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "horizontal_final.png"), dpi=110)
+    with naming(os.path.join(out, "horizontal_final.png")):
+        fig.savefig(os.path.join(out, "horizontal_final.png"), dpi=110)
     plt.close(fig)
 
 

@@ -18,6 +18,8 @@ import numpy as np
 import plotly
 from plotly.offline import get_plotlyjs
 
+from file_errors import naming
+
 _STYLE = """
 body { font-family: system-ui, sans-serif; margin: 1.2em 2em; color: #222; max-width: 1400px; }
 h1 { font-size: 1.5em; } h2 { font-size: 1.2em; margin-top: 1.6em; border-bottom: 1px solid #ccc; }
@@ -93,7 +95,7 @@ def write_plotly_js(folder):
         return path
     os.makedirs(folder, exist_ok=True)
     tmp = f"{path}.{os.getpid()}.tmp"
-    with open(tmp, "wb") as f:
+    with naming(path), open(tmp, "wb") as f:
         f.write(code)
     os.replace(tmp, path)
     return path
@@ -169,7 +171,7 @@ class Page:
         (write_plotly_js)."""
         lib = write_plotly_js(lib_dir if lib_dir is not None else os.path.dirname(os.path.abspath(path)))
         src = os.path.relpath(lib, os.path.dirname(os.path.abspath(path))).replace(os.sep, "/")
-        with open(path, "w", encoding="utf-8") as f:
+        with naming(path), open(path, "w", encoding="utf-8") as f:
             f.write(f'<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8"><title>{esc(self.title)}</title>'
                     f"<style>{_STYLE}</style></head>\n<body>\n"
                     f'<p id="loading">Loading the plots (plotly.js from {esc(src)})...</p>\n')

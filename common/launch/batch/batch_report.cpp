@@ -14,6 +14,7 @@
 #include "launch/batch/batch_merge.hpp"
 #include "config/config.hpp"
 #include "metrics/report_tables.hpp"
+#include "framework/lockstep.hpp"
 #include "framework/run_config.hpp"
 
 namespace gdnav::launch::batch {
@@ -124,7 +125,10 @@ int run_report_tool(const std::string& name, std::vector<std::string> args, bool
     while (waitpid(pid, &st, 0) < 0) {
     }
     const int code = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
-    if (code != 0 && log_failure) spdlog::error("{}: {} {} failed with code {}", name, py, script.string(), code);
+    // Exit code 6: the tool could not write a file and its own last line names it (docs/runtime.md, "Exit codes");
+    // a second line here would bury it.
+    if (code != 0 && code != framework::kExitWriteFailed && log_failure)
+        spdlog::error("{}: {} {} failed with code {}", name, py, script.string(), code);
     return code;
 }
 
@@ -183,12 +187,15 @@ int write_batch_report(const std::vector<fs::path>& dirs, const ReportOptions& o
                 const fs::path batch = runs_view(groups[i], batches[i].runs, view);
                 code = std::max(code, run_report_tool("report.py", {batch.string(), "--out", fig_out.string()}));
                 const std::string csv = batches.size() == 1 ? "runs.csv" : "runs_" + std::to_string(i + 1) + ".csv";
-                if (o.review)
+                if (o.review && code != framework::kExitWriteFailed)
                     code = std::max(code, run_report_tool("review.py", {batch.string(), "--out", fig_out.string(),
                                                                         "--tables", (out / "tables.md").string(),
                                                                         "--runs-csv", (out / csv).string()}));
                 std::error_code ec;
                 fs::remove_all(view, ec);
+                // A refused write (a full disk): every further file would meet the same disk, and the tool's line
+                // naming the file stays the last one.
+                if (code == framework::kExitWriteFailed) return code;
             }
     return code;
 }

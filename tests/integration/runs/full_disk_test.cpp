@@ -162,3 +162,36 @@ TEST(DamagedBatch, ATruncatedRunAndAMissingMetricsAreNamedAndRunAgainByTheSameCo
         }
     EXPECT_EQ(run({kExe, "report", out.string(), "--no-figures"}, 240.0).exit_code, 0);
 }
+
+TEST(FullDisk, AReportOntoAFullDiskNamesTheFileItCouldNotWriteOnItsLastLine) {
+    // A complete batch where there is room; then its figures (report.py, through gdnav report) and its review pages
+    // (review.py) written onto a tiny file system: each ends with exit code 6 and one last line naming the file, no
+    // traceback, and gdnav report starts no review.py after report.py was refused.
+    const fs::path dir = temp_dir("full-disk-report");
+    const fs::path batch = dir / "batch";
+    ASSERT_EQ(run({kExe, "montecarlo", "--scenario", "2", "--runs", "2", "--jobs", "2", "--steps", "16000", "--layout",
+                   "direct", "--seed", "1", "--no-report", "--out", batch.string()},
+                  300.0)
+                  .exit_code,
+              0);
+    TinyDisk disk("full-disk-report-out", 160 * 1024, 48 * 1024);
+    SCOPED_TRACE(disk.mounted() ? "tmpfs" : "file size limit");
+    const Result figures =
+        run(disk.command({kExe, "report", batch.string(), "--out", (disk.dir() / "report").string()}), 240.0);
+    EXPECT_EQ(figures.exit_code, 6) << figures.output;
+    EXPECT_EQ(figures.output.find("Traceback"), std::string::npos) << figures.output;
+    EXPECT_EQ(figures.output.find("review.py"), std::string::npos) << figures.output;
+    const std::regex png(R"(^report\.py: \S+/report/\S+\.png: (No space left on device|File too large)$)");
+    EXPECT_TRUE(std::regex_search(last_line(figures.output), png)) << figures.output;
+
+    ASSERT_EQ(run({kExe, "report", batch.string(), "--no-figures"}, 240.0).exit_code, 0);  // tables.md, runs.csv
+    const fs::path tables = batch / "report" / "tables.md", runs_csv = batch / "report" / "runs.csv";
+    const Result pages = run(disk.command({"/usr/bin/python3", std::string(GDNAV_SOURCE_DIR) + "/tools/report/review.py",
+                                           batch.string(), "--out", (disk.dir() / "review").string(), "--tables",
+                                           tables.string(), "--runs-csv", runs_csv.string()}),
+                             240.0);
+    EXPECT_EQ(pages.exit_code, 6) << pages.output;
+    EXPECT_EQ(pages.output.find("Traceback"), std::string::npos) << pages.output;
+    const std::regex js(R"(^review\.py: \S+/review/\S+: (No space left on device|File too large)$)");
+    EXPECT_TRUE(std::regex_search(last_line(pages.output), js)) << pages.output;
+}
