@@ -1,11 +1,15 @@
 // A plain two-process Fast DDS ping-pong with the messages an attitude member exchanges per step: the floor against
 // which a process member's per-step cost in a gdnav run is judged (docs/runtime.md, "Members: what a step costs").
-// No gdnav code: one participant per process, default transports (shared memory and UDP on one host), RELIABLE
-// KEEP_LAST(1) readers and writers, blocking on a WaitSet. Per round the "ping" process writes ImuSample, MagSample,
+// No gdnav code: one participant per process, blocking on a WaitSet; by default Fast DDS's default transports (shared
+// memory and UDP on one host, data sharing where the type allows it) and RELIABLE KEEP_LAST(1) readers and writers;
+// with --profiles FILE the participant, writers and readers of gdnav's XML profiles instead (gdnav_participant,
+// gdnav_data_writer, gdnav_data_reader: config/dds/gdnav_profiles.xml is UDP only, no data sharing), so that the floor
+// is measured on the transport a gdnav run uses (docs/runtime.md, "Members: what a step costs"). Per round the "ping" process writes ImuSample, MagSample,
 // AirDataEstimate and PositionEstimate stamped with the round; the "pong" process waits until it holds all four of
 // that round and answers with an AttitudeEstimate; the ping waits for the answer. The round trip is the wall time
 // from the first write to the answer's arrival.
 //   bench_dds_ping_pong [--domain D (default 231)] [--rounds N (default 20000)] [--warmup N (default 1000)]
+//                       [--profiles FILE]
 // Prints the median, mean, 10th and 90th percentiles of the round trip in microseconds.
 #include <signal.h>
 #include <sys/wait.h>
@@ -37,14 +41,25 @@ namespace msg = gdnav::msg;
 
 namespace {
 
+// --profiles: the XML file whose gdnav profiles the endpoints use (empty: Fast DDS's defaults).
+std::string g_profiles;
+
 struct Endpoint {
     fdds::DomainParticipant* participant{nullptr};
     fdds::Publisher* publisher{nullptr};
     fdds::Subscriber* subscriber{nullptr};
 
     explicit Endpoint(int domain) {
-        participant = fdds::DomainParticipantFactory::get_instance()->create_participant(
-            static_cast<fdds::DomainId_t>(domain), fdds::PARTICIPANT_QOS_DEFAULT);
+        auto* factory = fdds::DomainParticipantFactory::get_instance();
+        fdds::DomainParticipantQos pq = fdds::PARTICIPANT_QOS_DEFAULT;
+        if (!g_profiles.empty() &&
+            (factory->load_XML_profiles_file(g_profiles) != ReturnCode_t::RETCODE_OK ||
+             factory->get_participant_qos_from_profile("gdnav_participant", pq) != ReturnCode_t::RETCODE_OK)) {
+            std::fprintf(stderr, "bench_dds_ping_pong: %s: cannot load it or its profile 'gdnav_participant'\n",
+                         g_profiles.c_str());
+            std::exit(2);
+        }
+        participant = factory->create_participant(static_cast<fdds::DomainId_t>(domain), pq);
         if (participant == nullptr) {
             std::fprintf(stderr, "bench_dds_ping_pong: cannot create a participant on domain %d\n", domain);
             std::exit(2);
@@ -73,10 +88,13 @@ struct Endpoint {
     }
     template <class PubSub>
     fdds::DataWriter* writer(const std::string& name) {
+        if (!g_profiles.empty()) return publisher->create_datawriter_with_profile(topic<PubSub>(name), "gdnav_data_writer");
         return publisher->create_datawriter(topic<PubSub>(name), reliable_last(fdds::DATAWRITER_QOS_DEFAULT));
     }
     template <class PubSub>
     fdds::DataReader* reader(const std::string& name) {
+        if (!g_profiles.empty())
+            return subscriber->create_datareader_with_profile(topic<PubSub>(name), "gdnav_data_reader");
         return subscriber->create_datareader(topic<PubSub>(name), reliable_last(fdds::DATAREADER_QOS_DEFAULT));
     }
 };
@@ -188,8 +206,9 @@ int ping(int domain, std::uint64_t rounds, std::uint64_t warmup) {
     for (double v : rtt_us) sum += v;
     const auto pct = [&](double q) { return rtt_us[static_cast<std::size_t>(q * (rtt_us.size() - 1))]; };
     std::printf("bench_dds_ping_pong: %zu round trips (after %llu warm-up) of ImuSample + MagSample + "
-                "AirDataEstimate + PositionEstimate -> AttitudeEstimate between two processes, domain %d\n",
-                rtt_us.size(), static_cast<unsigned long long>(warmup), domain);
+                "AirDataEstimate + PositionEstimate -> AttitudeEstimate between two processes, domain %d, %s\n",
+                rtt_us.size(), static_cast<unsigned long long>(warmup), domain,
+                g_profiles.empty() ? "Fast DDS's default transports and QoS" : ("profiles of " + g_profiles).c_str());
     std::printf("  round trip [us]: median %.1f, mean %.1f, p10 %.1f, p90 %.1f\n", pct(0.5), sum / rtt_us.size(),
                 pct(0.1), pct(0.9));
     return 0;
@@ -213,11 +232,12 @@ int main(int argc, char** argv) {
     std::uint64_t rounds = 20000, warmup = 1000;
     for (int a = 1; a < argc; ++a) {
         const std::string f = argv[a];
-        if (a + 1 >= argc || (f != "--domain" && f != "--rounds" && f != "--warmup")) {
-            std::fprintf(stderr, "usage: bench_dds_ping_pong [--domain D] [--rounds N] [--warmup N]\n");
+        if (a + 1 >= argc || (f != "--domain" && f != "--rounds" && f != "--warmup" && f != "--profiles")) {
+            std::fprintf(stderr, "usage: bench_dds_ping_pong [--domain D] [--rounds N] [--warmup N] [--profiles FILE]\n");
             return 2;
         }
         const char* v = argv[++a];
+        if (f == "--profiles") g_profiles = v;
         if (f == "--domain") domain = static_cast<int>(parse_count("--domain", v, 0, 232));
         if (f == "--rounds") rounds = parse_count("--rounds", v, 1, 100000000);
         if (f == "--warmup") warmup = parse_count("--warmup", v, 0, 100000000);

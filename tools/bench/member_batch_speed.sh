@@ -2,6 +2,7 @@
 # What a swapped-in member costs a Monte Carlo batch (docs/runtime.md, "Members: what a step costs"; the measured
 # sets in docs/notes/member-batch-speed.md). On one machine and in the same minutes: the plain two-process DDS
 # ping-pong of an attitude member's messages (bench_dds_ping_pong), alone and two at once (the batches run two jobs),
+# on Fast DDS's default transports (shared memory on one host) and on gdnav's own (config/dds/gdnav_profiles.xml, UDP),
 # the built-in nav_att's cost per step (gdnav bench), then five batches of RUNS runs of scenario #2 with --jobs 2 and seed 1:
 #   base       the built-in filters, direct layout
 #   py_in      examples/python/complementary_attitude.py's class as nav_att inside gdnav, direct
@@ -54,7 +55,7 @@ process_cpu() {  # median over the runs of $1 of the member process's (user + sy
 }
 
 echo "member_batch_speed: $(nproc) cores, $(uname -n), commit $(git -C "$SRC" rev-parse --short HEAD 2>/dev/null || echo '?'), $(date -u +%FT%TZ)"
-echo "1/7 plain DDS ping-pong, alone and two at once (as the batches' two jobs)"
+echo "1/7 plain DDS ping-pong, alone and two at once (as the batches' two jobs); default transports, then gdnav's"
 "$B/tests/bench_dds_ping_pong" --domain "$D" --rounds 20000 --warmup 1000 | tee "$OUT/ping_pong.txt"
 "$B/tests/bench_dds_ping_pong" --domain "$((D + 1))" --rounds 20000 --warmup 1000 > "$OUT/ping_pong_a.txt" &
 "$B/tests/bench_dds_ping_pong" --domain "$((D + 2))" --rounds 20000 --warmup 1000 > "$OUT/ping_pong_b.txt"
@@ -62,6 +63,16 @@ wait
 cat "$OUT/ping_pong_a.txt" "$OUT/ping_pong_b.txt"
 pp=$(grep -o 'median [0-9.]*' "$OUT/ping_pong.txt" | awk '{print $2}')
 pp2=$(grep -ho 'median [0-9.]*' "$OUT/ping_pong_a.txt" "$OUT/ping_pong_b.txt" | awk '{s += $2} END {print s / NR}')
+# The same on the transport a gdnav run uses (gdnav_profiles.xml: UDP only, no data sharing; the default transports
+# above take shared memory between two processes of one host).
+UDP_PROFILES=$SRC/config/dds/gdnav_profiles.xml
+"$B/tests/bench_dds_ping_pong" --domain "$D" --rounds 20000 --warmup 1000 --profiles "$UDP_PROFILES" | tee "$OUT/ping_pong_udp.txt"
+"$B/tests/bench_dds_ping_pong" --domain "$((D + 1))" --rounds 20000 --warmup 1000 --profiles "$UDP_PROFILES" > "$OUT/ping_pong_udp_a.txt" &
+"$B/tests/bench_dds_ping_pong" --domain "$((D + 2))" --rounds 20000 --warmup 1000 --profiles "$UDP_PROFILES" > "$OUT/ping_pong_udp_b.txt"
+wait
+cat "$OUT/ping_pong_udp_a.txt" "$OUT/ping_pong_udp_b.txt"
+ppu=$(grep -o 'median [0-9.]*' "$OUT/ping_pong_udp.txt" | awk '{print $2}')
+ppu2=$(grep -ho 'median [0-9.]*' "$OUT/ping_pong_udp_a.txt" "$OUT/ping_pong_udp_b.txt" | awk '{s += $2} END {print s / NR}')
 echo "2/7 built-in nav_att per step (gdnav bench, direct)"
 "$G" bench --scenario paper2 --steps 20000 --layouts direct --mc-runs 0 > "$OUT/bench.txt" 2>&1
 nav_att=$(awk '$1 == "nav_att" {print $2}' "$OUT/bench.txt")
@@ -91,3 +102,5 @@ printf "%-10s %-9s %9.0f %11.2f %12.2f %12.2f %12.2f\n" py_proc composed "$w_py_
 echo "in process: the callback as gdnav calls it $cb_in us CPU, the class's own step $body us: gdnav adds $(printf %.2f "$add_in") us (target <= 5)"
 echo "process members: plain ping-pong round trip $pp us alone, $(printf %.1f "$pp2") us two at once (medians); gdnav adds $(printf %.1f "$add_cxx") us (C++) and $(printf %.1f "$add_py") us (Python)"
 echo "  against the round trip alone: $(echo "$add_cxx / $pp" | bc -l | xargs printf %.2f)x and $(echo "$add_py / $pp" | bc -l | xargs printf %.2f)x; two at once: $(echo "$add_cxx / $pp2" | bc -l | xargs printf %.2f)x and $(echo "$add_py / $pp2" | bc -l | xargs printf %.2f)x (target <= 1.2x)"
+echo "plain ping-pong on gdnav's transport (UDP, $(basename "$UDP_PROFILES")): $ppu us alone, $(printf %.1f "$ppu2") us two at once (medians)"
+echo "  against it alone: $(echo "$add_cxx / $ppu" | bc -l | xargs printf %.2f)x and $(echo "$add_py / $ppu" | bc -l | xargs printf %.2f)x; two at once: $(echo "$add_cxx / $ppu2" | bc -l | xargs printf %.2f)x and $(echo "$add_py / $ppu2" | bc -l | xargs printf %.2f)x"
