@@ -27,6 +27,9 @@ inline constexpr const char* kParticipantProfile = "gdnav_participant";
 inline constexpr const char* kDataWriterProfile = "gdnav_data_writer";
 inline constexpr const char* kDataReaderProfile = "gdnav_data_reader";
 inline constexpr const char* kControlWriterProfile = "gdnav_control_writer";
+// The members' StepDone and ComponentStatus writers (the clock's Tick and status writers take kControlWriterProfile).
+// Optional in a profile file: where it is missing, kControlWriterProfile (DdsContext::writer's fallback).
+inline constexpr const char* kMemberControlWriterProfile = "gdnav_member_control_writer";
 inline constexpr const char* kControlReaderProfile = "gdnav_control_reader";
 inline constexpr const char* kLatchedWriterProfile = "gdnav_latched_writer";
 inline constexpr const char* kLatchedReaderProfile = "gdnav_latched_reader";
@@ -42,8 +45,9 @@ public:
     DdsContext(const DdsContext&) = delete;
     DdsContext& operator=(const DdsContext&) = delete;
 
+    // fallback: the profile used when the profile file does not define `profile` (nullptr: none, an error).
     eprosima::fastdds::dds::DataWriter* writer(const std::string& topic, const msg::MessageOps& ops,
-                                               const char* profile);
+                                               const char* profile, const char* fallback = nullptr);
     // stride > 1: the reader gets only the samples of steps k % stride == 0, filtered by the writers where they can
     // (dds/filters/stride_filter.hpp). best_effort: the profile's QoS with BEST_EFFORT reliability (an observer's
     // inputs, Component::observer(): no acknowledgements or resends, a lost sample stays lost).

@@ -17,8 +17,10 @@ void ControlPlane::open(DdsContext& dds) {
     // Only the clock's statuses (its heartbeat): the other members' are for the clock (dds/filters/status_filter.hpp).
     status_reader_ = dds.status_reader(topics::kStatus, msg::message_ops<msg::ComponentStatus>(), kControlReaderProfile,
                                        framework::kClockName);
-    done_writer_ = dds.writer(topics::kStepDone, msg::message_ops<msg::StepDone>(), kControlWriterProfile);
-    status_writer_ = dds.writer(topics::kStatus, msg::message_ops<msg::ComponentStatus>(), kControlWriterProfile);
+    done_writer_ = dds.writer(topics::kStepDone, msg::message_ops<msg::StepDone>(), kMemberControlWriterProfile,
+                              kControlWriterProfile);
+    status_writer_ = dds.writer(topics::kStatus, msg::message_ops<msg::ComponentStatus>(),
+                                kMemberControlWriterProfile, kControlWriterProfile);
     pulse_.attach(status_writer_);
     for (DataReader* r : {control_reader_, status_reader_}) {
         StatusCondition& cond = r->get_statuscondition();

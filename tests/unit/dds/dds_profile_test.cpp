@@ -1,7 +1,8 @@
 // The default DDS profile (config/dds/gdnav_profiles.xml) as Fast DDS actually loads it: UDPv4 only, no shared memory
 // and no data sharing between processes (a SIGKILLed process must not be able to abort a healthy one through a
 // shared-memory mutex, docs/runtime.md "Transports"), the data writers keep Fast DDS's default heartbeat period (a
-// short one made long runs stall) while the control writers repair within 100 ms, and the data writers suppress NACKs for 100 ms (docs/runtime.md "NACK suppression"). Guards against an
+// short one made long runs stall) while the clock's control writers repair within 100 ms and the members' within 500 ms,
+// and the data writers suppress NACKs for 100 ms (docs/runtime.md "NACK suppression"). Guards against an
 // edit of the XML silently bringing any of it back; and an observer's reader is best-effort.
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -33,7 +34,8 @@ TEST(DdsProfile, DefaultProfileUsesUdpOnlyWithoutSharedMemory) {
     // "Socket receive buffers").
     EXPECT_EQ(udp_receive_buffer_asked(*dds.participant()), 4u << 20);
 
-    for (const char* profile : {kDataWriterProfile, kControlWriterProfile, kLatchedWriterProfile}) {
+    for (const char* profile :
+         {kDataWriterProfile, kControlWriterProfile, kMemberControlWriterProfile, kLatchedWriterProfile}) {
         SCOPED_TRACE(profile);
         DataWriter* w = dds.writer(std::string("gdnav_test/") + profile, message_ops<gdnav::msg::Tick>(), profile);
         EXPECT_EQ(w->get_qos().data_sharing().kind(), DataSharingKind::OFF);
@@ -41,10 +43,15 @@ TEST(DdsProfile, DefaultProfileUsesUdpOnlyWithoutSharedMemory) {
         // Heartbeat period: Fast DDS's 3 s on the data and latched writers (a short one made long runs stall); 100 ms
         // on the control writers, so that a Tick or status lost on a loaded machine is repaired well within
         // run.member_timeout_s (docs/runtime.md "Transports").
+        // The members' control writers 500 ms: their status every 100 ms keeps them heartbeating to every host's
+        // status reader, and 500 ms is still a third of the default run.member_timeout_s.
         const auto& hb = w->get_qos().reliable_writer_qos().times.heartbeatPeriod;
         if (std::string(profile) == kControlWriterProfile) {
             EXPECT_EQ(hb.seconds, 0);
             EXPECT_EQ(hb.nanosec, 100'000'000u);
+        } else if (std::string(profile) == kMemberControlWriterProfile) {
+            EXPECT_EQ(hb.seconds, 0);
+            EXPECT_EQ(hb.nanosec, 500'000'000u);
         } else {
             EXPECT_EQ(hb.seconds, 3);
         }
@@ -109,4 +116,21 @@ TEST(DdsProfile, TheParticipantLeaseOutlastsTheLongestMemberTimeout) {
                                   1e-9 * d.leaseDuration_announcementperiod.nanosec;
         EXPECT_GT(lease_s, gdnav::framework::kMemberTimeoutMax_s + 2.0 * announce_s) << lease_s << " s";
     }
+}
+
+TEST(DdsProfile, AWriterProfileTheFileDoesNotDefineFallsBackToTheOneGiven) {
+    // The members' StepDone and status writers ask for gdnav_member_control_writer with gdnav_control_writer as the
+    // fallback, so a profile file of a user's that predates it (or lossy_link.xml, which leaves it out) still works.
+    // Tested with a name no file defines: one process keeps the first file's profiles for every later file.
+    DdsContext dds(200 + static_cast<int>(getpid() % 30), config_dir() / "dds" / "gdnav_profiles.xml",
+                   "gdnav.test.fallback");
+    DataWriter* w = dds.writer("gdnav_test/fallback", message_ops<gdnav::msg::StepDone>(), "gdnav_no_such_profile",
+                               kControlWriterProfile);
+    ASSERT_NE(w, nullptr);
+    const auto& hb = w->get_qos().reliable_writer_qos().times.heartbeatPeriod;
+    EXPECT_EQ(hb.seconds, 0);
+    EXPECT_EQ(hb.nanosec, 100'000'000u);  // gdnav_control_writer's
+    EXPECT_EQ(w->get_qos().history().depth, 256);
+    EXPECT_THROW(dds.writer("gdnav_test/no_fallback", message_ops<gdnav::msg::StepDone>(), "gdnav_no_such_profile"),
+                 std::runtime_error);
 }
