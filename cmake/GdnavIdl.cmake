@@ -44,7 +44,8 @@ function(gdnav_idl_library target)
     string(REGEX REPLACE "([0-9a-f][0-9a-f])" "0x\\1," _hex "${_hex}")
     file(WRITE ${outdir}/${base}IdlText.cxx.tmp
       "// Generated from ${abs} by cmake/GdnavIdl.cmake: the IDL text (a byte array: no string-length limit).\n"
-      "#include <string_view>\nnamespace gdnav::msg::idl_text {\nnamespace { const unsigned char k_${base}[] = {${_hex}}; }\n"
+      "#include <string_view>\nnamespace gdnav::msg::idl_text {\n"
+      "namespace { const unsigned char k_${base}[] = {${_hex}}; }\n"
       "std::string_view ${base}() { return {reinterpret_cast<const char*>(k_${base}), sizeof(k_${base})}; }\n}\n")
     configure_file(${outdir}/${base}IdlText.cxx.tmp ${outdir}/${base}IdlText.cxx COPYONLY)
     list(APPEND sources ${outdir}/${base}IdlText.cxx)

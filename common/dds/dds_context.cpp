@@ -87,7 +87,8 @@ Topic* DdsContext::topic(const std::string& name, const msg::MessageOps& ops) {
 DataWriter* DdsContext::writer(const std::string& name, const msg::MessageOps& ops, const char* profile,
                                const char* fallback) {
     DataWriterQos defined;
-    if (fallback != nullptr && publisher_->get_datawriter_qos_from_profile(profile, defined) != ReturnCode_t::RETCODE_OK)
+    if (fallback != nullptr &&
+        publisher_->get_datawriter_qos_from_profile(profile, defined) != ReturnCode_t::RETCODE_OK)
         profile = fallback;
     DataWriter* w = publisher_->create_datawriter_with_profile(topic(name, ops), profile);
     if (!w) throw std::runtime_error("cannot create DDS writer for " + name + " with profile '" + profile + "'");

@@ -4,10 +4,10 @@
 // memory and UDP on one host, data sharing where the type allows it) and RELIABLE KEEP_LAST(1) readers and writers;
 // with --profiles FILE the participant, writers and readers of gdnav's XML profiles instead (gdnav_participant,
 // gdnav_data_writer, gdnav_data_reader: config/dds/gdnav_profiles.xml is UDP only, no data sharing), so that the floor
-// is measured on the transport a gdnav run uses (docs/runtime.md, "Members: what a step costs"). Per round the "ping" process writes ImuSample, MagSample,
-// AirDataEstimate and PositionEstimate stamped with the round; the "pong" process waits until it holds all four of
-// that round and answers with an AttitudeEstimate; the ping waits for the answer. The round trip is the wall time
-// from the first write to the answer's arrival.
+// is measured on the transport a gdnav run uses (docs/runtime.md, "Members: what a step costs"). Per round the "ping"
+// process writes ImuSample, MagSample, AirDataEstimate and PositionEstimate stamped with the round; the "pong" process
+// waits until it holds all four of that round and answers with an AttitudeEstimate; the ping waits for the answer.
+// The round trip is the wall time from the first write to the answer's arrival.
 //   bench_dds_ping_pong [--domain D (default 231)] [--rounds N (default 20000)] [--warmup N (default 1000)]
 //                       [--profiles FILE]
 // Prints the median, mean, 10th and 90th percentiles of the round trip in microseconds.
@@ -88,7 +88,8 @@ struct Endpoint {
     }
     template <class PubSub>
     fdds::DataWriter* writer(const std::string& name) {
-        if (!g_profiles.empty()) return publisher->create_datawriter_with_profile(topic<PubSub>(name), "gdnav_data_writer");
+        if (!g_profiles.empty())
+            return publisher->create_datawriter_with_profile(topic<PubSub>(name), "gdnav_data_writer");
         return publisher->create_datawriter(topic<PubSub>(name), reliable_last(fdds::DATAWRITER_QOS_DEFAULT));
     }
     template <class PubSub>
@@ -233,7 +234,8 @@ int main(int argc, char** argv) {
     for (int a = 1; a < argc; ++a) {
         const std::string f = argv[a];
         if (a + 1 >= argc || (f != "--domain" && f != "--rounds" && f != "--warmup" && f != "--profiles")) {
-            std::fprintf(stderr, "usage: bench_dds_ping_pong [--domain D] [--rounds N] [--warmup N] [--profiles FILE]\n");
+            std::fprintf(stderr,
+                         "usage: bench_dds_ping_pong [--domain D] [--rounds N] [--warmup N] [--profiles FILE]\n");
             return 2;
         }
         const char* v = argv[++a];

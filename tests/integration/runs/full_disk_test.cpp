@@ -186,9 +186,10 @@ TEST(FullDisk, AReportOntoAFullDiskNamesTheFileItCouldNotWriteOnItsLastLine) {
 
     ASSERT_EQ(run({kExe, "report", batch.string(), "--no-figures"}, 240.0).exit_code, 0);  // tables.md, runs.csv
     const fs::path tables = batch / "report" / "tables.md", runs_csv = batch / "report" / "runs.csv";
-    const Result pages = run(disk.command({"/usr/bin/python3", std::string(GDNAV_SOURCE_DIR) + "/tools/report/review.py",
-                                           batch.string(), "--out", (disk.dir() / "review").string(), "--tables",
-                                           tables.string(), "--runs-csv", runs_csv.string()}),
+    const std::string review_py = std::string(GDNAV_SOURCE_DIR) + "/tools/report/review.py";
+    const Result pages = run(disk.command({"/usr/bin/python3", review_py, batch.string(), "--out",
+                                           (disk.dir() / "review").string(), "--tables", tables.string(),
+                                           "--runs-csv", runs_csv.string()}),
                              240.0);
     EXPECT_EQ(pages.exit_code, 6) << pages.output;
     EXPECT_EQ(pages.output.find("Traceback"), std::string::npos) << pages.output;
