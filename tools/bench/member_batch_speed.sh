@@ -54,25 +54,26 @@ process_cpu() {  # median over the runs of $1 of the member process's (user + sy
     done | median
 }
 
+ping_pong() {  # $1 = output name, then bench_dds_ping_pong's extra arguments; sets pp_alone and pp_two (medians)
+    local name=$1; shift
+    "$B/tests/bench_dds_ping_pong" --domain "$D" --rounds 20000 --warmup 1000 "$@" | tee "$OUT/$name.txt"
+    "$B/tests/bench_dds_ping_pong" --domain "$((D + 1))" --rounds 20000 --warmup 1000 "$@" > "$OUT/${name}_a.txt" &
+    "$B/tests/bench_dds_ping_pong" --domain "$((D + 2))" --rounds 20000 --warmup 1000 "$@" > "$OUT/${name}_b.txt"
+    wait
+    cat "$OUT/${name}_a.txt" "$OUT/${name}_b.txt"
+    pp_alone=$(grep -o 'median [0-9.]*' "$OUT/$name.txt" | awk '{print $2}')
+    pp_two=$(grep -ho 'median [0-9.]*' "$OUT/${name}_a.txt" "$OUT/${name}_b.txt" | awk '{s += $2} END {print s / NR}')
+}
+
 echo "member_batch_speed: $(nproc) cores, $(uname -n), commit $(git -C "$SRC" rev-parse --short HEAD 2>/dev/null || echo '?'), $(date -u +%FT%TZ)"
 echo "1/7 plain DDS ping-pong, alone and two at once (as the batches' two jobs); default transports, then gdnav's"
-"$B/tests/bench_dds_ping_pong" --domain "$D" --rounds 20000 --warmup 1000 | tee "$OUT/ping_pong.txt"
-"$B/tests/bench_dds_ping_pong" --domain "$((D + 1))" --rounds 20000 --warmup 1000 > "$OUT/ping_pong_a.txt" &
-"$B/tests/bench_dds_ping_pong" --domain "$((D + 2))" --rounds 20000 --warmup 1000 > "$OUT/ping_pong_b.txt"
-wait
-cat "$OUT/ping_pong_a.txt" "$OUT/ping_pong_b.txt"
-pp=$(grep -o 'median [0-9.]*' "$OUT/ping_pong.txt" | awk '{print $2}')
-pp2=$(grep -ho 'median [0-9.]*' "$OUT/ping_pong_a.txt" "$OUT/ping_pong_b.txt" | awk '{s += $2} END {print s / NR}')
+ping_pong ping_pong
+pp=$pp_alone; pp2=$pp_two
 # The same on the transport a gdnav run uses (gdnav_profiles.xml: UDP only, no data sharing; the default transports
 # above take shared memory between two processes of one host).
 UDP_PROFILES=$SRC/config/dds/gdnav_profiles.xml
-"$B/tests/bench_dds_ping_pong" --domain "$D" --rounds 20000 --warmup 1000 --profiles "$UDP_PROFILES" | tee "$OUT/ping_pong_udp.txt"
-"$B/tests/bench_dds_ping_pong" --domain "$((D + 1))" --rounds 20000 --warmup 1000 --profiles "$UDP_PROFILES" > "$OUT/ping_pong_udp_a.txt" &
-"$B/tests/bench_dds_ping_pong" --domain "$((D + 2))" --rounds 20000 --warmup 1000 --profiles "$UDP_PROFILES" > "$OUT/ping_pong_udp_b.txt"
-wait
-cat "$OUT/ping_pong_udp_a.txt" "$OUT/ping_pong_udp_b.txt"
-ppu=$(grep -o 'median [0-9.]*' "$OUT/ping_pong_udp.txt" | awk '{print $2}')
-ppu2=$(grep -ho 'median [0-9.]*' "$OUT/ping_pong_udp_a.txt" "$OUT/ping_pong_udp_b.txt" | awk '{s += $2} END {print s / NR}')
+ping_pong ping_pong_udp --profiles "$UDP_PROFILES"
+ppu=$pp_alone; ppu2=$pp_two
 echo "2/7 built-in nav_att per step (gdnav bench, direct)"
 "$G" bench --scenario paper2 --steps 20000 --layouts direct --mc-runs 0 > "$OUT/bench.txt" 2>&1
 nav_att=$(awk '$1 == "nav_att" {print $2}' "$OUT/bench.txt")

@@ -42,6 +42,13 @@ AIR = [("tas_mps", r"$\hat v_{TAS}-v_{TAS}$", 1.0, "m/s"), ("aoa_rad", r"$\hat\a
 COLUMNS = [c[0] for c in ATTITUDE + AIR] + ["h_m", "vn_mps", "ve_mps", "hor_m", "cross_m", "along_m"]
 
 
+def save(fig, path):
+    """Writes FIG to PATH as PNG and closes it; a refused write names PATH (file_errors.naming)."""
+    with naming(path):
+        fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
 def read_error(path):
     return read_table(path, "error", COLUMNS)
 
@@ -75,9 +82,7 @@ def time_figure(path, title, rows, stats, series, best, worst, t_gnss, t_min, ra
     axes[0, 0].legend(loc="upper left", fontsize=7, ncol=4)
     axes[-1, 0].set_xlabel("t [s]   (dotted: GNSS lost)")
     fig.tight_layout()
-    with naming(path):
-        fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save(fig, path)
 
 
 def rank(runs, key, stat, absolute=True):
@@ -111,9 +116,7 @@ def scatter_figures(out, runs, label):
     for ax in axes:
         ax.grid(True, alpha=0.3)
     fig.tight_layout()
-    with naming(os.path.join(out, "attitude_scatter.png")):
-        fig.savefig(os.path.join(out, "attitude_scatter.png"), dpi=110)
-    plt.close(fig)
+    save(fig, os.path.join(out, "attitude_scatter.png"))
 
     fig, axes = plt.subplots(1, 2, figsize=(10, 4.2))
     cross = [signal(r["metrics"], "cross_m", "final") for r in runs]
@@ -145,9 +148,7 @@ def scatter_figures(out, runs, label):
     for ax in axes:
         ax.grid(True, alpha=0.3)
     fig.tight_layout()
-    with naming(os.path.join(out, "horizontal_final.png")):
-        fig.savefig(os.path.join(out, "horizontal_final.png"), dpi=110)
-    plt.close(fig)
+    save(fig, os.path.join(out, "horizontal_final.png"))
 
 
 def main():
