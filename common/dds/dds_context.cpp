@@ -102,6 +102,15 @@ DataReader* DdsContext::reader(const std::string& name, const msg::MessageOps& o
                            std::to_string(stride), kStrideFilterClass, best_effort);
 }
 
+bool DdsContext::delete_reader(DataReader* reader) {
+    reader->set_listener(nullptr);
+    const TopicDescription* description = reader->get_topicdescription();
+    if (subscriber_->delete_datareader(reader) != ReturnCode_t::RETCODE_OK) return false;
+    if (const auto* cft = dynamic_cast<const ContentFilteredTopic*>(description))
+        participant_->delete_contentfilteredtopic(cft);
+    return true;
+}
+
 DataReader* DdsContext::status_reader(const std::string& name, const msg::MessageOps& ops, const char* profile,
                                       const std::string& member) {
     return filtered_reader(name, ops, profile, "/of_" + member, "member = %0", member, kStatusFilterClass);

@@ -56,6 +56,9 @@ public:
     // A reader of `topic` (ComponentStatus) that gets only the statuses of `member` (dds/filters/status_filter.hpp).
     eprosima::fastdds::dds::DataReader* status_reader(const std::string& topic, const msg::MessageOps& ops,
                                                       const char* profile, const std::string& member);
+    // Deletes a reader made by reader() (its listener removed first) and its content-filtered topic, if any. False
+    // when Fast DDS refuses (the reader then stays, unread).
+    bool delete_reader(eprosima::fastdds::dds::DataReader* reader);
     [[nodiscard]] eprosima::fastdds::dds::DomainParticipant* participant() const { return participant_; }
     // The participants of the domain and the members they announced (this one's own included).
     [[nodiscard]] const Participants& participants() const { return participants_; }

@@ -2,7 +2,11 @@
 // inputs' producers and faults, the observers' readers, matching, a member's rejoin (part of DdsHost::Impl).
 #include "dds/host/host_impl.hpp"
 
+#include <algorithm>
+
 #include <spdlog/spdlog.h>
+
+#include "framework/graph.hpp"
 
 namespace gdnav::dds {
 
@@ -19,8 +23,34 @@ bool DdsHost::Impl::configure(const msg::RunControl& c) {
         }
         inputs.configure(l, control.members().entries(), faults.schedule(), ri);
     }
+    drop_local_readers();
     observers.make_readers(locals, control.members().entries(), *dds, &listener);
     return true;
+}
+
+void DdsHost::Impl::drop_local_readers() {
+    const auto& table = control.members().entries();
+    const auto here = [this](const std::string& name) {
+        return std::any_of(locals.begin(), locals.end(), [&](const host::Local& l) { return l.comp->name() == name; });
+    };
+    std::vector<std::string> dropped;
+    for (auto& l : locals)
+        for (host::Channel* ch : l.inputs) {
+            if (ch->local_only()) continue;
+            MemberNames producers;
+            for (auto i : ch->producers()) producers.push_back(table[i].name().to_string());
+            if (!host::read_without_dds(producers, here)) continue;
+            // The channel forgets its reader before DDS unmatches it from the local writers, so that no output is
+            // ever judged unread outside while an outside reader is still matched (host::read_outside).
+            eprosima::fastdds::dds::DataReader* r = ch->drop_reader();
+            if (r != nullptr && !dds->delete_reader(r))
+                spdlog::warn("member '{}': the DDS reader of input '{}' could not be deleted; it stays, unread",
+                             l.comp->name(), ch->port()->topic());
+            dropped.push_back(l.comp->name() + ":" + ch->port()->topic());
+        }
+    if (!dropped.empty())
+        spdlog::debug("host {}: inputs produced in this process only, read without DDS: {}", control.host_id(),
+                      framework::join_topics(dropped));
 }
 
 bool DdsHost::Impl::live_faults(const msg::RunControl& c) {
@@ -60,7 +90,9 @@ bool DdsHost::Impl::all_matched() const {
             // An observer may read the topic's mirror instead (mirror.hpp): its reader is matched there.
             eprosima::fastdds::dds::PublicationMatchedStatus st;
             o.writer->get_publication_matched_status(st);
-            if (st.current_count + host::mirror_readers(o) < control.members().readers_of(o.port->topic()))
+            // Local readers without a DDS reader (drop_local_readers) are not matched with it.
+            const int dropped = static_cast<int>(o.routes.size()) - host::local_dds_readers(o);
+            if (st.current_count + host::mirror_readers(o) + dropped < control.members().readers_of(o.port->topic()))
                 return false;
         }
     return control.clock_matched();

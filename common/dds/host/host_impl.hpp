@@ -91,6 +91,9 @@ struct DdsHost::Impl final : host::ControlHandler {
     // ControlHandler: the member table, and a longer fault schedule.
     bool configure(const msg::RunControl& c) override;
     bool live_faults(const msg::RunControl& c) override;
+    // After the member table: inputs whose producers are all members of this process lose their DDS reader (they are
+    // handed over in the process; host::read_without_dds).
+    void drop_local_readers();
     // Member f.target, declared dead, came back (gdnav component --rejoin) and computes again from step
     // f.from_step: this host's inputs from it wait for its samples from that step on; or, if it is ours, it starts
     // there.

@@ -1,5 +1,7 @@
 #include "dds/host/host_inbox.hpp"
 
+#include <algorithm>
+
 #include <fastdds/dds/core/status/PublicationMatchedStatus.hpp>
 
 #include "framework/stride_policy.hpp"
@@ -76,6 +78,15 @@ Output make_output(framework::OutputBase* port, eprosima::fastdds::dds::DataWrit
     return Output{port, writer, {}, count_matches(writer), nullptr, nullptr};
 }
 
-bool read_outside(const Output& o) { return o.matched->readers.load() > static_cast<int>(o.routes.size()); }
+int local_dds_readers(const Output& o) {
+    return static_cast<int>(
+        std::count_if(o.routes.begin(), o.routes.end(), [](const Route& r) { return r.channel->reader() != nullptr; }));
+}
+
+bool read_outside(const Output& o) { return o.matched->readers.load() > local_dds_readers(o); }
+
+bool read_without_dds(const MemberNames& producers, const std::function<bool(const std::string&)>& here) {
+    return !producers.empty() && std::all_of(producers.begin(), producers.end(), here);
+}
 
 }  // namespace gdnav::dds::host

@@ -3,10 +3,12 @@
 // host_impl.hpp), and the in-process hand-over between members hosted in the same process: a sample written by a
 // local member goes straight into the inboxes of the local members that read it (a copy, no serialisation, no
 // transport, no thread wake-up); it is published on DDS only while a reader outside the process is matched (another
-// process's member, a recorder, a monitoring tool).
+// process's member, a recorder, a monitoring tool). An input whose producers are all in the process has no DDS reader
+// (read_without_dds).
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -45,6 +47,9 @@ public:
     [[nodiscard]] eprosima::fastdds::dds::DataReader* reader() const { return reader_; }
     // An observer's input: its reader is made at CONFIGURE (host_observers.hpp).
     [[nodiscard]] bool deferred() const { return deferred_; }
+    // Every producer of the input is a member of this process: it has no DDS reader (drop_reader), its samples come
+    // only by hand-over (route_locally).
+    [[nodiscard]] bool local_only() const { return local_only_; }
 
     // Set-up. The member was created anew (a scheduled restart): the inbox serves its new port, lost as before.
     void rebind(framework::InputBase& fresh) {
@@ -53,6 +58,12 @@ public:
     }
     void set_reader(eprosima::fastdds::dds::DataReader* reader) { reader_ = reader; }
     void defer_reader() { deferred_ = true; }
+    // From the member table: every producer is in this process. Returns the reader to delete (nullptr: none made).
+    eprosima::fastdds::dds::DataReader* drop_reader() {
+        local_only_ = true;
+        deferred_ = false;
+        return std::exchange(reader_, nullptr);
+    }
 
     // From the member table: the producers of the topic (their table indices and names; announce[i]: producer i is
     // started by gdnav, producer_check.hpp), and whether they run free (then the input keeps the latest sample).
@@ -158,6 +169,7 @@ private:
     std::uint64_t lost_until_{0};  // its producer rejoined: samples of steps below this one are lost
     bool revived_{false};
     bool deferred_{false};
+    bool local_only_{false};
     bool seen_{false};             // a sample has arrived (any step)
     std::uint64_t newest_{0};      // the newest step of the samples arrived
     ProducerCheck producer_;       // whose samples are used (from the member table)
@@ -184,7 +196,7 @@ struct MatchCount final : eprosima::fastdds::dds::DataWriterListener {
 struct Output {
     framework::OutputBase* port{nullptr};
     eprosima::fastdds::dds::DataWriter* writer{nullptr};
-    std::vector<Route> routes;  // local readers (their DDS readers are matched too: not counted as outside ones)
+    std::vector<Route> routes;  // local readers (those with a DDS reader are matched too: not outside ones)
     std::unique_ptr<MatchCount> matched;  // listener of `writer` (outlives it: the host deletes DDS first)
     // The decimated mirror of the topic for observers (host_observers.hpp; nullptr: none) and its readers.
     eprosima::fastdds::dds::DataWriter* mirror{nullptr};
@@ -230,5 +242,14 @@ bool hand_over(const Route& r, const Local& consumer, const void* sample, std::u
 
 // Whether a reader outside the process is matched with this output's writer (then the sample is also published).
 bool read_outside(const Output& o);
+
+// How many of this output's local readers have a DDS reader (matched with its writer like an outside one).
+int local_dds_readers(const Output& o);
+
+// Whether an input whose producers are `producers` is read without DDS: every one is a member of this process
+// (`here`). Such an input gets its samples by hand-over only; a DDS reader of its own would also be matched with the
+// local writer and, whenever the topic is also read outside the process, receive every sample a second time through
+// Fast DDS's intraprocess delivery (docs/runtime.md, "Members: what a step costs").
+bool read_without_dds(const MemberNames& producers, const std::function<bool(const std::string&)>& here);
 
 }  // namespace gdnav::dds::host

@@ -77,6 +77,7 @@ void Inputs::configure(const Local& l, const std::vector<msg::MemberInfo>& table
 
 bool Inputs::matched() const {
     for (const auto& ch : channels_) {
+        if (ch->local_only()) continue;
         SubscriptionMatchedStatus st;
         ch->reader()->get_subscription_matched_status(st);
         if (st.current_count < static_cast<int>(ch->producers().size())) return false;

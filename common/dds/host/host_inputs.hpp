@@ -36,7 +36,7 @@ public:
     // (`schedule`, none when empty); an input nobody produces is lost.
     void configure(const Local& l, const std::vector<msg::MemberInfo>& table,
                    const framework::faults::FaultSchedule& schedule, const framework::RunInfo& ri);
-    // Whether every input's reader is matched with all its producers.
+    // Whether every input's reader is matched with all its producers (an input read without DDS needs none).
     [[nodiscard]] bool matched() const;
 
     // The samples that arrived for member l's input `ch` (of run ri), into its inbox by step; others' samples and

@@ -112,11 +112,19 @@ TEST(External, ExternalControlJoinsTheComposedLayout) {
     ASSERT_EQ(r0.exit_code, 0) << r0.output;
     const auto out = temp_dir("ext-composed");
     const Pair p = run_with_external({"run", "--scenario", "paper2", "--seed", "2", "--layout", "composed", "--steps",
-                                      "3000", "--record", kRecorded, "--external", "control"},
+                                      "3000", "--record", kRecorded, "--external", "control", "--log-level", "debug"},
                                      {example("gdnav-example-control")}, out, 120.0);
     ASSERT_EQ(p.run_code, 0) << p.run_log << "\n--- member:\n" << p.member_log;
     EXPECT_EQ(p.member_code, 0) << p.member_log;
     EXPECT_EQ(read_digests(out), read_digests(ref)) << p.run_log;
+    // The composed process reads over DDS only what the external member writes (docs/runtime.md, "Members: what a
+    // step costs"): its members' other inputs come by hand-over, without a DDS reader of their own.
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(p.run_log, m, std::regex("read without DDS: ([^\n]*)"))) << p.run_log;
+    const std::string dropped = m[1];
+    for (const char* in : {"nav_att:gdnav/ImuSample", "nav_pos:gdnav/AttitudeEstimate", "nav_recorder:gdnav/Truth"})
+        EXPECT_NE(dropped.find(in), std::string::npos) << in << " in: " << dropped;
+    EXPECT_EQ(dropped.find("ControlCommands"), std::string::npos) << dropped;
 }
 
 // Issue 12 item 5 with an external member: a secure composed run (DDS Security, docs/deployment.md) with the
