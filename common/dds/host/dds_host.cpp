@@ -55,7 +55,6 @@ void DdsHost::Impl::setup() {
     control.open(*dds);
     for (framework::Component* c : g.order) locals.push_back(make_local(c));
     host::route_locally(locals);
-    listener.host = this;
 }
 
 host::Local DdsHost::Impl::make_local(framework::Component* c) {
@@ -92,16 +91,18 @@ void DdsHost::Impl::pump() {
     while (pending.load()) {
         if (!mtx.try_lock()) return;  // the holder sees `pending` before it leaves
         pending.store(false);
-        if (!closing) process_data(framework::steady_now_s());
+        if (!closing) process_data(framework::steady_now_s(), false);
         mtx.unlock();
     }
 }
 
-void DdsHost::Impl::process_data(double now) {
-    if (control.read_ticks(now)) inputs.apply_dead_mask(control.members().dead_mask());
+void DdsHost::Impl::process_data(double now, bool all) {
+    if ((tick_fresh.exchange(false) || all) && control.read_ticks(now))
+        inputs.apply_dead_mask(control.members().dead_mask());
     const framework::RunInfo& ri = control.run().timing().ri;
     for (auto& l : locals)
-        for (host::Channel* ch : l.inputs) inputs.read(l, *ch, ri);
+        for (host::Channel* ch : l.inputs)
+            if (ch->take_fresh() || all) inputs.read(l, *ch, ri);
     if (in_advance) return;
     in_advance = true;
     while (advance()) {
@@ -137,7 +138,7 @@ bool DdsHost::Impl::tick_over(int& code) {
     if (control.run().phase() == host::RunPhase::Phase::Matching && all_matched()) control.matched_all();
     control.heartbeat(now, locals);
     pending.store(false);
-    process_data(now);
+    process_data(now, true);
     return control.run().clock_alive(now, code);
 }
 
@@ -146,7 +147,11 @@ int DdsHost::Impl::loop() {
     ConditionSeq active;
     const Duration_t slice(0, static_cast<std::uint32_t>(framework::kWaitSliceS * 1e9));
     int code = framework::kExitOk;
-    for (DataReader* r : data_readers()) r->set_listener(&listener, StatusMask::data_available());
+    control.tick_reader()->set_listener(listen(&tick_fresh), StatusMask::data_available());
+    for (auto& l : locals)
+        for (host::Channel* ch : l.inputs)
+            if (ch->reader() != nullptr)
+                ch->reader()->set_listener(listen(ch->fresh_flag()), StatusMask::data_available());
     std::unique_lock<std::recursive_mutex> lock(mtx, std::defer_lock);
     while (true) {
         control.wait(active, slice);
@@ -158,7 +163,7 @@ int DdsHost::Impl::loop() {
     control.pulse().stop();
     // STOP came after every barrier member's last StepDone, so the samples of the last steps are here: an observer,
     // which nobody waited for, computes what it still can before it finishes.
-    if (code == framework::kExitOk) process_data(framework::steady_now_s());
+    if (code == framework::kExitOk) process_data(framework::steady_now_s(), true);
     closing = true;
     lock.unlock();
     for (DataReader* r : data_readers()) r->set_listener(nullptr);

@@ -24,7 +24,8 @@ bool DdsHost::Impl::configure(const msg::RunControl& c) {
         inputs.configure(l, control.members().entries(), faults.schedule(), ri);
     }
     drop_local_readers();
-    observers.make_readers(locals, control.members().entries(), *dds, &listener);
+    observers.make_readers(locals, control.members().entries(), *dds,
+                           [this](host::Channel& ch) { return listen(ch.fresh_flag()); });
     return true;
 }
 

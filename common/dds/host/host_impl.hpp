@@ -15,6 +15,7 @@
 #include "dds/host/dds_host.hpp"
 
 #include <atomic>
+#include <deque>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -48,10 +49,26 @@ struct DdsHost::Impl final : host::ControlHandler {
     // Listener threads never block on the mutex (Fast DDS may call them with a reader lock held, and the lock
     // holder may be taking from that reader): they raise `pending` and try_lock; whoever holds the lock drains
     // again before leaving (pump()).
-    struct DataListener final : eprosima::fastdds::dds::DataReaderListener {
+    // Each reader has a listener of its own that first raises its reader's `fresh` flag, so that a pass taken for a
+    // sample reads only the readers that received something (a take from an empty reader still costs Fast DDS's
+    // bookkeeping per matched writer); the main loop's pass, every kWaitSliceS, reads them all.
+    struct ReaderListener final : eprosima::fastdds::dds::DataReaderListener {
         Impl* host{nullptr};
-        void on_data_available(eprosima::fastdds::dds::DataReader*) override { host->pump(); }
-    } listener;
+        std::atomic<bool>* fresh{nullptr};
+        void on_data_available(eprosima::fastdds::dds::DataReader*) override {
+            fresh->store(true);
+            host->pump();
+        }
+    };
+    std::deque<ReaderListener> reader_listeners;  // stable addresses; added to by the main loop only
+    std::atomic<bool> tick_fresh{true};
+    // A new listener for a reader whose samples raise `fresh`.
+    eprosima::fastdds::dds::DataReaderListener* listen(std::atomic<bool>* fresh) {
+        ReaderListener& l = reader_listeners.emplace_back();
+        l.host = this;
+        l.fresh = fresh;
+        return &l;
+    }
     std::recursive_mutex mtx;
     std::atomic<bool> pending{false};
     bool in_advance{false};
@@ -81,7 +98,8 @@ struct DdsHost::Impl final : host::ControlHandler {
 
     // New Tick or data sample (listener threads, and the main loop after its own work).
     void pump();
-    void process_data(double now);
+    // all: every reader (the main loop's pass), else only those whose flag is raised (a listener's pass).
+    void process_data(double now, bool all);
     // One pass of the main loop (between waits). Returns false when the run must end; `code` is then the exit code.
     bool tick_over(int& code);
     int loop();

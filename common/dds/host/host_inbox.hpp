@@ -50,6 +50,10 @@ public:
     // Every producer of the input is a member of this process: it has no DDS reader (drop_reader), its samples come
     // only by hand-over (route_locally).
     [[nodiscard]] bool local_only() const { return local_only_; }
+    // Raised by its reader's listener when a sample arrives (host_impl.hpp); take_fresh() lowers it and says whether
+    // it was raised, before the reader is taken from, so that a sample arriving meanwhile raises it again.
+    [[nodiscard]] std::atomic<bool>* fresh_flag() { return &fresh_; }
+    bool take_fresh() { return fresh_.exchange(false); }
 
     // Set-up. The member was created anew (a scheduled restart): the inbox serves its new port, lost as before.
     void rebind(framework::InputBase& fresh) {
@@ -170,6 +174,7 @@ private:
     bool revived_{false};
     bool deferred_{false};
     bool local_only_{false};
+    std::atomic<bool> fresh_{true};
     bool seen_{false};             // a sample has arrived (any step)
     std::uint64_t newest_{0};      // the newest step of the samples arrived
     ProducerCheck producer_;       // whose samples are used (from the member table)

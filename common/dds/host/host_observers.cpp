@@ -54,7 +54,7 @@ bool Observers::defers(const Local& l, const framework::InputBase& in) const {
 }
 
 void Observers::make_readers(std::vector<Local>& locals, const std::vector<msg::MemberInfo>& table, DdsContext& dds,
-                             DataReaderListener* listener) const {
+                             const std::function<DataReaderListener*(Channel&)>& listener_for) const {
     // A producer writes a mirror when it is a gdnav host in another process: configured, not external, not here.
     const auto writes_mirror = [&](const std::string& name) {
         const bool configured = std::any_of(rc_.members.begin(), rc_.members.end(),
@@ -72,7 +72,7 @@ void Observers::make_readers(std::vector<Local>& locals, const std::vector<msg::
             const bool mirror = reads_mirror(framework::stride_of(*ch->port()), !mirrors(), names, writes_mirror);
             ch->set_reader(mirror ? dds.reader(mirror_topic(topic), ch->ops(), kDataReaderProfile, 1, true)
                                   : topic_reader(dds, *ch, true));
-            ch->reader()->set_listener(listener, StatusMask::data_available());
+            ch->reader()->set_listener(listener_for(*ch), StatusMask::data_available());
             spdlog::debug("member '{}': input '{}' read from {}", l.comp->name(), topic,
                           mirror ? mirror_topic(topic) : "the topic itself");
         }

@@ -3,6 +3,7 @@
 // input that may read a decimated mirror gets its reader once the member table names the producers, mirror.hpp),
 // the mirrors every output writes for them, and the steps an observer gives up (lost samples, or it fell behind).
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <fastdds/dds/subscriber/DataReaderListener.hpp>
@@ -47,9 +48,9 @@ public:
     [[nodiscard]] bool defers(const Local& l, const framework::InputBase& in) const;
 
     // The readers of the deferred inputs, once the member table names the producers: the mirror when every producer
-    // writes one, else the topic itself (with the stride filter). They are served by `listener`.
+    // writes one, else the topic itself (with the stride filter). Each is served by listener_for(its channel).
     void make_readers(std::vector<Local>& locals, const std::vector<msg::MemberInfo>& table, DdsContext& dds,
-                      eprosima::fastdds::dds::DataReaderListener* listener) const;
+                      const std::function<eprosima::fastdds::dds::DataReaderListener*(Channel&)>& listener_for) const;
 
     // The steps each observer computed and skipped (log lines at the end of the run).
     static void report(const std::vector<Local>& locals, std::uint64_t steps);

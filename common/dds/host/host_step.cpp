@@ -21,7 +21,8 @@ bool DdsHost::Impl::advance() {
                 any = true;
                 continue;
             }
-            for (host::Channel* ch : l.inputs) inputs.read(l, *ch, t.ri);
+            for (host::Channel* ch : l.inputs)
+                if (ch->take_fresh()) inputs.read(l, *ch, t.ri);
             if (l.next_step != k) continue;  // an observer that fell behind jumped ahead
             if (!inputs.ready(l, k)) {
                 if (!l.observer || !host::step_missed(l, k)) break;
