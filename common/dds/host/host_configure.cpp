@@ -2,8 +2,6 @@
 // inputs' producers and faults, the observers' readers, matching, a member's rejoin (part of DdsHost::Impl).
 #include "dds/host/host_impl.hpp"
 
-#include <algorithm>
-
 #include <spdlog/spdlog.h>
 
 #include "framework/graph.hpp"
@@ -31,9 +29,7 @@ bool DdsHost::Impl::configure(const msg::RunControl& c) {
 
 void DdsHost::Impl::drop_local_readers() {
     const auto& table = control.members().entries();
-    const auto here = [this](const std::string& name) {
-        return std::any_of(locals.begin(), locals.end(), [&](const host::Local& l) { return l.comp->name() == name; });
-    };
+    const auto here = [this](const std::string& name) { return host::hosted_here(locals, name); };
     std::vector<std::string> dropped;
     for (auto& l : locals)
         for (host::Channel* ch : l.inputs) {

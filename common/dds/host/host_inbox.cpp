@@ -78,6 +78,10 @@ Output make_output(framework::OutputBase* port, eprosima::fastdds::dds::DataWrit
     return Output{port, writer, {}, count_matches(writer), nullptr, nullptr};
 }
 
+bool hosted_here(const std::vector<Local>& locals, const std::string& name) {
+    return std::any_of(locals.begin(), locals.end(), [&](const Local& l) { return l.comp->name() == name; });
+}
+
 int local_dds_readers(const Output& o) {
     return static_cast<int>(
         std::count_if(o.routes.begin(), o.routes.end(), [](const Route& r) { return r.channel->reader() != nullptr; }));

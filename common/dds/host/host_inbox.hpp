@@ -238,6 +238,9 @@ long inbox_index(const Channel& ch, std::uint64_t next_step, std::uint64_t s);
 // "rejected TOPIC:NOT_FROM_PRODUCER:BAD_STAMP,..." for each input that rejected any.
 std::string rejected_note(const Local& l);
 
+// Whether member `name` is one of this process's members.
+bool hosted_here(const std::vector<Local>& locals, const std::string& name);
+
 // Connects every local output to the local inputs of its topic (call once, after all locals are set up).
 void route_locally(std::vector<Local>& locals);
 

@@ -59,9 +59,7 @@ void Observers::make_readers(std::vector<Local>& locals, const std::vector<msg::
     const auto writes_mirror = [&](const std::string& name) {
         const bool configured = std::any_of(rc_.members.begin(), rc_.members.end(),
                                             [&](const framework::MemberSpec& m) { return m.name == name; });
-        const bool here = std::any_of(locals.begin(), locals.end(),
-                                      [&](const Local& l) { return l.comp->name() == name; });
-        return configured && !rc_.is_external(name) && !here;
+        return configured && !rc_.is_external(name) && !hosted_here(locals, name);
     };
     for (auto& l : locals)
         for (Channel* ch : l.inputs) {

@@ -1,7 +1,7 @@
 // The default DDS profile (config/dds/gdnav_profiles.xml) as Fast DDS actually loads it: UDPv4 only, no shared memory
 // and no data sharing between processes (a SIGKILLed process must not be able to abort a healthy one through a
 // shared-memory mutex, docs/runtime.md "Transports"), the data writers keep Fast DDS's default heartbeat period (a
-// short one made long runs stall) while the clock's control writers repair within 100 ms and the members' within
+// short one slows long UDP runs down) while the clock's control writers repair within 100 ms and the members' within
 // 500 ms, and the data writers suppress NACKs for 100 ms (docs/runtime.md "NACK suppression"). Guards against an edit
 // of the XML silently bringing any of it back; and an observer's reader is best-effort.
 #include <gtest/gtest.h>
